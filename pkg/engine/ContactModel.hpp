@@ -1,0 +1,42 @@
+// What the contact engine knows that does not change from step to step: the rounded bodies with their
+// meshes and materials, the rigid partners (planes, YADE Walls and Boxes) with theirs, and the options
+// of the pressure law. Indices into `bodies` and `partners` are the engine's; `id` is YADE's body id.
+#pragma once
+
+#include <memory>
+#include <variant>
+#include <vector>
+
+#include "pkg/law/Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp"
+#include "pkg/material/HertzMaterial.hpp"
+#include "pkg/shape/Box.hpp"
+#include "pkg/shape/Plane.hpp"
+#include "pkg/shape/RoundedMesh.hpp"
+#include "pkg/shape/Wall.hpp"
+
+namespace roundedmesh {
+
+// A Plane is given in the global frame; a Wall or a Box is placed by its body's state.
+using PartnerShape = std::variant<Plane, Wall, Box>;
+
+struct RoundedBody {
+  int id;
+  std::shared_ptr<const RoundedMesh> mesh;  // in the body's principal frame
+  HertzMaterial material;
+  Real mass;               // [kg]
+  Real equivalentRadius;   // radius of the sphere of the same volume [m]
+};
+
+struct Partner {
+  int id;
+  PartnerShape shape;
+  HertzMaterial material;
+};
+
+struct ContactModel {
+  std::vector<RoundedBody> bodies;
+  std::vector<Partner> partners;
+  PressureOptions pressure;
+};
+
+}  // namespace roundedmesh

@@ -1,0 +1,16 @@
+// Ig2 functor: every triangle of a rounded body against an infinite plane. Appends one PressureGeom per
+// triangle whose contact circle meets its projection (see trianglePlaneGeom).
+// Inputs in body 1's frame: the plane, and the motion of the plane relative to body 1.
+#pragma once
+
+#include <vector>
+
+#include "pkg/geom/TrianglePlaneGeom.hpp"
+#include "pkg/shape/Plane.hpp"
+
+namespace roundedmesh {
+
+void Ig2_RoundedMesh_Plane_PressureGeom(const RoundedMesh& mesh, const Plane& plane, const RelativeMotion& motion,
+                                        std::vector<PressureGeom>& geoms);
+
+}  // namespace roundedmesh

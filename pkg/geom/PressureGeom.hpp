@@ -1,0 +1,34 @@
+// IGeom of one rounded triangle of body 1 against a partner (Section 2.3, Appendix B), in the frame of
+// body 1. The contact plane has origin c (centre of the contact circle), unit normal n12 pointing from
+// body 1 to body 2, and in-plane axes t1, t2 with t1 x t2 = n12; plane coordinates are taken relative to c.
+#pragma once
+
+#include <array>
+
+#include "pkg/math/ConvexPolygon.hpp"
+
+namespace roundedmesh {
+
+struct PressureGeom {
+  int triangle;                  // index of the triangle in body 1's mesh
+  Vector3r centre;               // c [m]
+  Vector3r normal;               // n12
+  Vector3r tangent1, tangent2;   // t1, t2
+  Real radius;                   // combined radius of curvature R* (Eq. 3) [m]
+  Real sphereOverlap;            // delta_s, overlap of the encompassing spheres (Eq. 10) [m]
+  Real overlapRate;              // d(delta_s)/dt, positive while approaching [m/s]
+  Real contactRadius;            // a = sqrt(delta_s R*) (Eq. 5) [m]
+  ConvexPolygon polygon;         // S: the projected triangle(s), intersected (Fig. 2)
+  std::array<Vector2r, 3> nodes; // body 1's triangle corners projected on the plane, in mesh order
+  Vector2r effectivePoint;       // c_eff: the point of S closest to c
+  Real effectiveOverlap;         // delta_eff (Eq. B.4) [m]
+};
+
+// Velocity of body 2's material relative to body 1's at a point x of body 1's frame: linear + angular x x.
+struct RelativeMotion {
+  Vector3r linear = Vector3r::Zero();
+  Vector3r angular = Vector3r::Zero();
+  Vector3r at(const Vector3r& x) const { return linear + angular.cross(x); }
+};
+
+}  // namespace roundedmesh

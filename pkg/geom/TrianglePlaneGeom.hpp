@@ -1,0 +1,31 @@
+// Contact geometry of one rounded triangle against a flat, rigid-shaped partner face (Appendix B with the
+// partner's radius R2 -> infinity): the contact plane is the face itself and c is the foot of the
+// encompassing sphere's centre on it.
+//   facing check (Eq. B.5):  n_triangle . n12 > 0
+//   overlap (Eq. 10):        delta_s = R - dist(sphere centre, plane)
+//   contact circle (Eq. 5):  a = sqrt(delta_s R)
+//   polygon S:               projected triangle, clipped to the face when the face is finite
+//   effective overlap (B.4): delta_eff = delta_s - R + sqrt(R^2 - h^2), h = |c_eff - c|
+// Returns false, leaving geom unspecified, unless the contact circle meets S (h < a): only then can the
+// pressure of Eq. 9 act on the triangle.
+#pragma once
+
+#include "pkg/geom/PressureGeom.hpp"
+#include "pkg/shape/RoundedMesh.hpp"
+
+namespace roundedmesh {
+
+// A face of the partner in body 1's frame: a point on it, the normal n12 pointing into the partner, and
+// in-plane axes with t1 x t2 = n12. faceOutline, if given, bounds a finite face in (t1, t2) coordinates
+// relative to origin.
+struct ContactFace {
+  Vector3r origin;
+  Vector3r normal;
+  Vector3r tangent1, tangent2;
+  const ConvexPolygon* faceOutline = nullptr;
+};
+
+bool trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactFace& face, const RelativeMotion& motion,
+                       PressureGeom& geom);
+
+}  // namespace roundedmesh

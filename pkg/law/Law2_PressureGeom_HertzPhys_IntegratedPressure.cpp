@@ -1,0 +1,54 @@
+#include "pkg/law/Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp"
+
+#include "pkg/law/HertzPressure.hpp"
+#include "pkg/math/CirclePolygonArea.hpp"
+#include "pkg/math/DunavantRule.hpp"
+
+namespace roundedmesh {
+namespace {
+
+// r x n12 for r = (x, y) in plane coordinates with t1 x t2 = n12.
+Vector2r leverTimesNormal(const Vector2r& r) { return Vector2r(r.y(), -r.x()); }
+
+bool useDirectRegime(const PressureGeom& geom, const PressureOptions& options) {
+  switch (options.regime) {
+    case RegimeChoice::Quadrature: return false;
+    case RegimeChoice::Direct: return true;
+    case RegimeChoice::Auto: break;
+  }
+  const int subTriangles = geom.polygon.size() - 2;
+  const Real areaPerPoint = geom.polygon.area() / (subTriangles * static_cast<Real>(kDunavant8.size()));
+  return M_PI * geom.contactRadius * geom.contactRadius < options.gamma * areaPerPoint;
+}
+
+NormalLoad integrateByQuadrature(const PressureGeom& geom, const HertzPressure& pressure) {
+  NormalLoad load{0, Vector2r::Zero(), Regime::Quadrature};
+  const ConvexPolygon& s = geom.polygon;
+  for (int j = 1; j + 1 < s.size(); ++j) {
+    const Vector2r &p0 = s[0], &p1 = s[j], &p2 = s[j + 1];
+    const Real area = 0.5 * cross2(p1 - p0, p2 - p0);
+    for (const QuadraturePoint& q : kDunavant8) {
+      const Vector2r r = q.l1 * p0 + q.l2 * p1 + q.l3 * p2;
+      const Real dF = area * q.weight * pressure.at(r.squaredNorm());
+      load.force += dF;
+      load.moment += dF * leverTimesNormal(r);
+    }
+  }
+  return load;
+}
+
+NormalLoad applyDirectly(const PressureGeom& geom, const HertzPressure& pressure) {
+  const Real fraction = circlePolygonArea(geom.contactRadius, geom.polygon) / (M_PI * pressure.contactRadiusSq);
+  const Real force = pressure.totalForce() * fraction;
+  return {force, force * leverTimesNormal(geom.effectivePoint), Regime::Direct};
+}
+
+}  // namespace
+
+NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& geom, const HertzPhys& phys,
+                                                          const PressureOptions& options) {
+  const HertzPressure pressure = hertzPressure(geom, phys);
+  return useDirectRegime(geom, options) ? applyDirectly(geom, pressure) : integrateByQuadrature(geom, pressure);
+}
+
+}  // namespace roundedmesh

@@ -1,0 +1,100 @@
+#include "pkg/math/ConvexPolygon.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace roundedmesh {
+
+ConvexPolygon ConvexPolygon::triangle(const Vector2r& a, const Vector2r& b, const Vector2r& c) {
+  ConvexPolygon t;
+  t.push(a);
+  if (cross2(b - a, c - a) >= 0) {
+    t.push(b);
+    t.push(c);
+  } else {
+    t.push(c);
+    t.push(b);
+  }
+  return t;
+}
+
+ConvexPolygon ConvexPolygon::rectangle(const Vector2r& centre, Real hx, Real hy) {
+  ConvexPolygon r;
+  r.push(centre + Vector2r(-hx, -hy));
+  r.push(centre + Vector2r(hx, -hy));
+  r.push(centre + Vector2r(hx, hy));
+  r.push(centre + Vector2r(-hx, hy));
+  return r;
+}
+
+void ConvexPolygon::push(const Vector2r& p) {
+  if (size_ == kCapacity) throw std::logic_error("ConvexPolygon: more than 8 corners");
+  corners_[size_++] = p;
+}
+
+Real ConvexPolygon::area() const {
+  Real twice = 0;
+  for (int i = 0; i < size_; ++i) twice += cross2(corners_[i], corners_[(i + 1) % size_]);
+  return 0.5 * twice;
+}
+
+bool ConvexPolygon::contains(const Vector2r& p) const {
+  if (empty()) return false;
+  for (int i = 0; i < size_; ++i) {
+    const Vector2r& a = corners_[i];
+    const Vector2r& b = corners_[(i + 1) % size_];
+    if (cross2(b - a, p - a) < 0) return false;
+  }
+  return true;
+}
+
+Vector2r ConvexPolygon::closestPoint(const Vector2r& p) const {
+  if (contains(p)) return p;
+  Vector2r best = corners_[0];
+  Real bestDistanceSq = std::numeric_limits<Real>::infinity();
+  for (int i = 0; i < size_; ++i) {
+    const Vector2r& a = corners_[i];
+    const Vector2r edge = corners_[(i + 1) % size_] - a;
+    const Real lengthSq = edge.squaredNorm();
+    const Real t = lengthSq > 0 ? std::clamp((p - a).dot(edge) / lengthSq, Real(0), Real(1)) : Real(0);
+    const Vector2r q = a + t * edge;
+    const Real d = (p - q).squaredNorm();
+    if (d < bestDistanceSq) {
+      bestDistanceSq = d;
+      best = q;
+    }
+  }
+  return best;
+}
+
+ConvexPolygon ConvexPolygon::clippedBy(const Vector2r& a, const Vector2r& b) const {
+  ConvexPolygon out;
+  const Vector2r direction = b - a;
+  for (int i = 0; i < size_; ++i) {
+    const Vector2r& p = corners_[i];
+    const Vector2r& q = corners_[(i + 1) % size_];
+    const Real sp = cross2(direction, p - a);
+    const Real sq = cross2(direction, q - a);
+    if (sp >= 0) out.push(p);
+    // The edge crosses the line strictly: add the crossing point. Corners on the line are kept above,
+    // so a crossing is only added between strictly opposite signs and never duplicates a corner.
+    if ((sp > 0 && sq < 0) || (sp < 0 && sq > 0)) out.push(p + (sp / (sp - sq)) * (q - p));
+  }
+  return out;
+}
+
+ConvexPolygon ConvexPolygon::intersection(const ConvexPolygon& clip) const {
+  ConvexPolygon result = *this;
+  for (int i = 0; i < clip.size() && !result.empty(); ++i)
+    result = result.clippedBy(clip[i], clip[(i + 1) % clip.size()]);
+  return result;
+}
+
+ConvexPolygon ConvexPolygon::translated(const Vector2r& offset) const {
+  ConvexPolygon out = *this;
+  for (int i = 0; i < size_; ++i) out.corners_[i] += offset;
+  return out;
+}
+
+}  // namespace roundedmesh

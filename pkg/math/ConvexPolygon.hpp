@@ -1,0 +1,43 @@
+// A small convex polygon in a plane, counter-clockwise, stored inline (no allocation): the projected
+// triangles and their intersection polygon S of Section 2.3 / Appendix B. Clipping a triangle by a
+// rectangle gives at most 7 corners, by a triangle at most 6.
+#pragma once
+
+#include <array>
+
+#include "pkg/common/Types.hpp"
+
+namespace roundedmesh {
+
+class ConvexPolygon {
+ public:
+  static constexpr int kCapacity = 8;
+
+  ConvexPolygon() = default;
+  // A triangle in either orientation; stored counter-clockwise.
+  static ConvexPolygon triangle(const Vector2r& a, const Vector2r& b, const Vector2r& c);
+  // The axis-aligned rectangle [-hx, hx] x [-hy, hy] around centre.
+  static ConvexPolygon rectangle(const Vector2r& centre, Real hx, Real hy);
+
+  int size() const { return size_; }
+  bool empty() const { return size_ < 3; }
+  const Vector2r& operator[](int i) const { return corners_[i]; }
+  void push(const Vector2r& p);
+
+  Real area() const;
+  // True if p lies inside or on the boundary.
+  bool contains(const Vector2r& p) const;
+  // The point of the polygon (interior included) closest to p.
+  Vector2r closestPoint(const Vector2r& p) const;
+  // Keeps the part on the left of the directed line from a to b (Sutherland-Hodgman step).
+  ConvexPolygon clippedBy(const Vector2r& a, const Vector2r& b) const;
+  // Intersection with another convex polygon.
+  ConvexPolygon intersection(const ConvexPolygon& clip) const;
+  ConvexPolygon translated(const Vector2r& offset) const;
+
+ private:
+  std::array<Vector2r, kCapacity> corners_;
+  int size_ = 0;
+};
+
+}  // namespace roundedmesh

@@ -1,0 +1,17 @@
+// IPhys of a Hertz contact between two materials (Ip2_HertzMaterial_HertzMaterial_HertzPhys):
+//   E* = ((1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j)^-1   (Eq. 3)      A = (A_i + A_j) / 2   (Eq. 7)
+// The combined radius R* (Eq. 3) belongs to each triangle pair and lives in PressureGeom.
+#pragma once
+
+#include "pkg/material/HertzMaterial.hpp"
+
+namespace roundedmesh {
+
+struct HertzPhys {
+  Real effectiveModulus;  // E* [Pa]
+  Real damping;           // A [s]
+};
+
+HertzPhys Ip2_HertzMaterial_HertzMaterial_HertzPhys(const HertzMaterial& a, const HertzMaterial& b);
+
+}  // namespace roundedmesh

@@ -1,0 +1,84 @@
+#include "pkg/shape/RoundedMesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace roundedmesh {
+namespace {
+
+[[noreturn]] void reject(const std::string& message) { throw std::invalid_argument(message); }
+
+std::string describe(const Vector3r& v) {
+  std::ostringstream s;
+  s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+  return s.str();
+}
+
+// Centre of the circle through a, b, c (in their plane).
+Vector3r circumcentre(const Vector3r& a, const Vector3r& b, const Vector3r& c) {
+  const Vector3r ab = b - a, ac = c - a;
+  const Vector3r n = ab.cross(ac);
+  return a + (ac.squaredNorm() * n.cross(ab) + ab.squaredNorm() * ac.cross(n)) / (2 * n.squaredNorm());
+}
+
+}  // namespace
+
+RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> triangles,
+                         const std::vector<Real>& radii)
+    : vertices_(std::move(vertices)), triangles_(std::move(triangles)) {
+  if (vertices_.empty()) reject("vertices: the mesh has no vertices");
+  if (triangles_.empty()) reject("triangles: the mesh has no triangles");
+  if (radii.size() != triangles_.size())
+    reject("radii: " + std::to_string(radii.size()) + " radii given for " + std::to_string(triangles_.size()) +
+           " triangles");
+  const int vertexCount = static_cast<int>(vertices_.size());
+  for (int v = 0; v < vertexCount; ++v)
+    if (!vertices_[v].allFinite()) reject("vertices: vertex " + std::to_string(v) + " is not finite");
+
+  rounded_.resize(triangles_.size());
+  for (int t = 0; t < triangleCount(); ++t) {
+    const Triangle& tri = triangles_[t];
+    for (int corner : tri)
+      if (corner < 0 || corner >= vertexCount)
+        reject("triangles: triangle " + std::to_string(t) + " refers to vertex " + std::to_string(corner) +
+               ", but there are " + std::to_string(vertexCount) + " vertices");
+    if (!(std::isfinite(radii[t]) && radii[t] > 0))
+      reject("radii: radius of triangle " + std::to_string(t) + " must be positive and finite, got " +
+             std::to_string(radii[t]));
+    const Vector3r &a = vertices_[tri[0]], &b = vertices_[tri[1]], &c = vertices_[tri[2]];
+    const Vector3r doubleAreaNormal = (b - a).cross(c - a);
+    const Real doubleArea = doubleAreaNormal.norm();
+    const Real longestEdgeSq = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+    if (!(doubleArea > 1e-12 * longestEdgeSq))
+      reject("triangles: triangle " + std::to_string(t) + " (vertices " + std::to_string(tri[0]) + ", " +
+             std::to_string(tri[1]) + ", " + std::to_string(tri[2]) + ") has zero area, near " + describe(a));
+
+    RoundedTriangle& r = rounded_[t];
+    r.normal = doubleAreaNormal / doubleArea;
+    r.area = 0.5 * doubleArea;
+    r.circumcentre = circumcentre(a, b, c);
+    r.circumradius = (a - r.circumcentre).norm();
+    r.radius = std::max(radii[t], r.circumradius);
+    r.sphereCentre =
+        r.circumcentre - std::sqrt(std::max(r.radius * r.radius - r.circumradius * r.circumradius, Real(0))) * r.normal;
+    sphereBoundRadius_ = std::max(sphereBoundRadius_, r.sphereCentre.norm() + r.radius);
+  }
+}
+
+std::vector<Real> RoundedMesh::radii() const {
+  std::vector<Real> out(rounded_.size());
+  std::transform(rounded_.begin(), rounded_.end(), out.begin(), [](const RoundedTriangle& r) { return r.radius; });
+  return out;
+}
+
+RoundedMesh RoundedMesh::transformed(const Matrix3r& rotation, const Vector3r& translation) const {
+  std::vector<Vector3r> moved(vertices_.size());
+  std::transform(vertices_.begin(), vertices_.end(), moved.begin(),
+                 [&](const Vector3r& v) { return Vector3r(rotation * v + translation); });
+  return RoundedMesh(std::move(moved), triangles_, radii());
+}
+
+}  // namespace roundedmesh

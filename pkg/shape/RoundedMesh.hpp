@@ -1,0 +1,51 @@
+// Shape: a triangulated rounded body (Section 2.1). Each triangle carries a radius of curvature R and its
+// encompassing sphere: the sphere of radius R through the triangle's three corners with its centre on the
+// inner side. Everything is stored in the body frame and precomputed once, so that the contact pipeline
+// only reads it.
+// Inputs: vertices [m], triangles (corner indices, counter-clockwise seen from outside), one radius per
+// triangle [m]. A radius smaller than the triangle's circumradius is raised to the circumradius (no
+// sphere through the corners is smaller); radii() reports the radius actually used.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "pkg/common/Types.hpp"
+
+namespace roundedmesh {
+
+using Triangle = std::array<int, 3>;
+
+struct RoundedTriangle {
+  Vector3r normal;        // outward unit normal of the flat triangle
+  Real area;              // [m^2]
+  Real radius;            // radius of curvature R of the encompassing sphere [m]
+  Vector3r sphereCentre;  // centre of the encompassing sphere [m], body frame
+  Vector3r circumcentre;  // centre of the circle through the corners [m], body frame
+  Real circumradius;      // its radius [m]; the triangle lies inside that circle
+};
+
+class RoundedMesh {
+ public:
+  // Throws std::invalid_argument naming the offending vertex, triangle or radius.
+  RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> triangles, const std::vector<Real>& radii);
+
+  const std::vector<Vector3r>& vertices() const { return vertices_; }
+  const std::vector<Triangle>& triangles() const { return triangles_; }
+  const RoundedTriangle& rounded(int t) const { return rounded_[t]; }
+  int triangleCount() const { return static_cast<int>(triangles_.size()); }
+  std::vector<Real> radii() const;
+  // Radius of the ball around the body-frame origin that holds every encompassing sphere: no contact
+  // partner outside it can overlap any of them.
+  Real sphereBoundRadius() const { return sphereBoundRadius_; }
+  // The same mesh moved rigidly: x -> rotation * x + translation.
+  RoundedMesh transformed(const Matrix3r& rotation, const Vector3r& translation) const;
+
+ private:
+  std::vector<Vector3r> vertices_;
+  std::vector<Triangle> triangles_;
+  std::vector<RoundedTriangle> rounded_;
+  Real sphereBoundRadius_ = 0;
+};
+
+}  // namespace roundedmesh

@@ -1,0 +1,26 @@
+// The only code that touches YADE: reads the states of the bodies the engine manages from YADE's Python
+// objects (O.bodies[id].state, .shape) and adds the computed wrenches through O.forces. YADE's Vector3 and
+// Quaternion arrive as Eigen types through YADE's own Boost.Python converters (architecture.md).
+#pragma once
+
+#include <boost/python.hpp>
+#include <vector>
+
+#include "pkg/engine/ContactData.hpp"
+
+namespace roundedmesh::python {
+
+namespace bp = boost::python;
+
+// Fills data.bodyStates and data.partnerStates, and refreshes the partners' shapes from their YADE
+// shapes. Returns the ids of managed bodies that are no longer in the scene; when any is missing, the
+// states are incomplete and must not be used.
+std::vector<int> readScene(const bp::object& omega, ContactModel& model, ContactData& data);
+
+// Adds every non-zero wrench of `data` to YADE's force container (O.forces.addF / addT).
+void applyWrenches(const bp::object& omega, const ContactModel& model, const ContactData& data);
+
+// The partner's shape as YADE has it now: a Wall or a Box. Throws std::invalid_argument for any other.
+PartnerShape yadeShape(const bp::object& body, int id);
+
+}  // namespace roundedmesh::python

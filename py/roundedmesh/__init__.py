@@ -1,0 +1,24 @@
+"""roundedmesh: triangulated rounded bodies in YADE, with contact forces from the integrated Hertz
+pressure (Smeets et al., CMAME 277 (2014) 219-238).
+
+    import roundedmesh as rm
+    mesh = rm.Mesh.icosphere(0.025, 3)
+    rubber = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-3)
+    ball = rm.add_body(mesh, pos=(0, 0, 0.05), material=rubber)
+    floor = O.bodies.append(utils.wall(0, axis=2))
+    rm.assign_material(floor, rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=1e-3))
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
+
+See doc/user-guide.md.
+"""
+from . import _yade  # noqa: F401  (YADE's converters must exist before _core returns vectors)
+from ._core import HertzMaterial, Mesh, plane_contact
+from .scene import add_body, assign_material, critical_timestep, engine, rounded_bodies, statistics
+
+__all__ = ["Mesh", "HertzMaterial", "add_body", "assign_material", "engine", "critical_timestep", "statistics",
+           "rounded_bodies", "plane_contact"]
+
+
+def _restore_mesh(vertices, triangles, radii, centroid, orientation):
+    """Unpickles a Mesh (see Mesh.__reduce__)."""
+    return Mesh._restore(vertices, triangles, radii, centroid, orientation)

@@ -1,0 +1,82 @@
+"""ParaView-readable export of the rounded bodies.
+
+    write_vtp(path)          one VTK XML PolyData file with every rounded body's surface in global
+                             coordinates; cell data: body id, radius of curvature [m]
+    VtkSeries(directory)     numbered .vtp files plus a .pvd collection indexed by simulated time; call
+                             .write() when a frame is wanted, e.g. from a PyRunner
+"""
+import os
+import xml.etree.ElementTree as ElementTree
+
+import numpy as np
+from yade import O
+
+from .scene import rounded_bodies
+
+
+def _rotation_matrix(q):
+    x, y, z, w = q  # YADE's Quaternion iterates as x, y, z, w
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+
+
+def _surfaces():
+    points, triangles, body_ids, radii = [], [], [], []
+    offset = 0
+    for body_id, mesh in sorted(rounded_bodies().items()):
+        state = O.bodies[body_id].state
+        points.append(mesh.vertices @ _rotation_matrix(state.ori).T + np.array(state.pos))
+        triangles.append(mesh.triangles + offset)
+        body_ids.append(np.full(len(mesh.triangles), body_id))
+        radii.append(mesh.radii)
+        offset += len(mesh.vertices)
+    if not points:
+        return np.zeros((0, 3)), np.zeros((0, 3), int), np.zeros(0, int), np.zeros(0)
+    return np.vstack(points), np.vstack(triangles), np.concatenate(body_ids), np.concatenate(radii)
+
+
+def _data_array(parent, name, values, components=1, kind="Float64"):
+    array = ElementTree.SubElement(parent, "DataArray", type=kind, Name=name, format="ascii")
+    if components > 1:
+        array.set("NumberOfComponents", str(components))
+    array.text = " ".join(repr(v) for v in np.asarray(values).ravel().tolist())
+
+
+def write_vtp(path):
+    """Writes the rounded bodies of the current scene to `path` (.vtp) and returns the path."""
+    points, triangles, body_ids, radii = _surfaces()
+    root = ElementTree.Element("VTKFile", type="PolyData", version="1.0", byte_order="LittleEndian")
+    piece = ElementTree.SubElement(ElementTree.SubElement(root, "PolyData"), "Piece",
+                                   NumberOfPoints=str(len(points)), NumberOfPolys=str(len(triangles)))
+    _data_array(ElementTree.SubElement(piece, "Points"), "Points", points, 3)
+    polys = ElementTree.SubElement(piece, "Polys")
+    _data_array(polys, "connectivity", triangles, kind="Int64")
+    _data_array(polys, "offsets", 3 * np.arange(1, len(triangles) + 1), kind="Int64")
+    cells = ElementTree.SubElement(piece, "CellData", Scalars="radius")
+    _data_array(cells, "body_id", body_ids, kind="Int64")
+    _data_array(cells, "radius", radii)
+    ElementTree.ElementTree(root).write(path, xml_declaration=True, encoding="utf-8")
+    return path
+
+
+class VtkSeries:
+    """Frames `<prefix>_<iteration>.vtp` in `directory` and the collection `<prefix>.pvd` that ParaView
+    opens as one time series."""
+
+    def __init__(self, directory, prefix="rounded_bodies"):
+        self.directory = directory
+        self.prefix = prefix
+        self.frames = []
+        os.makedirs(directory, exist_ok=True)
+
+    def write(self):
+        name = f"{self.prefix}_{O.iter:08d}.vtp"
+        write_vtp(os.path.join(self.directory, name))
+        self.frames.append((O.time, name))
+        root = ElementTree.Element("VTKFile", type="Collection", version="1.0")
+        collection = ElementTree.SubElement(root, "Collection")
+        for time, frame in self.frames:
+            ElementTree.SubElement(collection, "DataSet", timestep=repr(time), part="0", file=frame)
+        ElementTree.ElementTree(root).write(os.path.join(self.directory, self.prefix + ".pvd"),
+                                            xml_declaration=True, encoding="utf-8")

@@ -1,0 +1,73 @@
+"""The reference scenes of shared/scenes.md that this package can build so far, shared by the tests, the
+demo and the benchmarks. Values the scene list leaves open are ours and documented in doc/validation.md.
+
+S2 -- static indentation of a meshed sphere against a rigid plane:
+    static_indentation(mesh, overlaps, material, orientation) -> forces [N]
+S3 -- a meshed sphere dropped on a YADE Wall under gravity with normal damping:
+    S3 (the parameters), build_bouncing_sphere(subdivisions) -> body id, trace_height(...)
+"""
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from yade import ForceResetter, NewtonIntegrator, O, utils
+from yade.minieigenHP import Quaternion
+
+from . import progress
+from ._core import HertzMaterial, Mesh, plane_contact
+from .scene import add_body, assign_material, engine
+
+RIGID = HertzMaterial(young=math.inf, poisson=0.0, density=1.0)
+
+
+def static_indentation(mesh, overlaps, material, orientation=Quaternion.Identity, **engine_options):
+    """Normal force [N] on `mesh` (a sphere of radius R centred at the origin of its frame) pressed by each
+    of `overlaps` [m] into the rigid plane z = 0, body turned by `orientation`."""
+    radius = float(np.max(np.linalg.norm(mesh.vertices, axis=1)))
+    forces = [plane_contact(mesh, (0, 0, radius - d), orientation, (0, 0, 0), (0, 0, 1), material, RIGID,
+                            **engine_options)[0][2] for d in overlaps]
+    return np.array(forces)
+
+
+@dataclass(frozen=True)
+class BouncingSphere:
+    """Scene S3 (ours where scenes.md is silent): S1's particle and box materials, a damping constant that
+    dissipates about half the energy of the first impact, and a drop that reaches about 10 % overlap."""
+    radius: float = 0.025                       # [m]
+    height: float = 0.05                        # initial height of the centre above the wall [m]
+    gravity: float = 9.81                       # [m/s^2]
+    timestep: float = 2e-5                      # [s], about 600 steps per impact
+    particle: HertzMaterial = HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-3)
+    wall: HertzMaterial = HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=1e-3)
+
+
+S3 = BouncingSphere()
+
+
+def build_bouncing_sphere(subdivisions, scene=S3, **engine_options):
+    """Resets YADE and builds S3 with an icosphere of `subdivisions` (1, 2, 3: 42, 162, 642 nodes).
+    Returns the sphere's body id."""
+    O.reset()
+    sphere = add_body(Mesh.icosphere(scene.radius, subdivisions), pos=(0, 0, scene.height), material=scene.particle)
+    wall = O.bodies.append(utils.wall(0, axis=2, sense=1))
+    assign_material(wall, scene.wall)
+    O.engines = [ForceResetter(), engine(**engine_options),
+                 NewtonIntegrator(gravity=(0, 0, -scene.gravity), damping=0)]
+    O.dt = scene.timestep
+    return sphere
+
+
+def trace_height(body_id, duration, label=None):
+    """Runs the current scene for `duration` [s], sampling the body's height every step.
+    Returns (times, heights); with a label, prints progress."""
+    steps = int(round(duration / O.dt))
+    times, heights = np.empty(steps + 1), np.empty(steps + 1)
+    state = O.bodies[body_id].state
+    times[0], heights[0] = O.time, state.pos[2]
+    reporter = progress.Progress(steps, label) if label else None
+    for i in range(1, steps + 1):
+        O.step()
+        times[i], heights[i] = O.time, state.pos[2]
+        if reporter:
+            reporter.update(i)
+    return times, heights

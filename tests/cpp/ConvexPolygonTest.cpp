@@ -1,0 +1,55 @@
+// The polygon S of Section 2.3: construction, clipping, containment and closest point.
+#include <gtest/gtest.h>
+
+#include "pkg/math/ConvexPolygon.hpp"
+
+namespace roundedmesh {
+namespace {
+
+TEST(ConvexPolygon, TriangleIsStoredCounterClockwise) {
+  const ConvexPolygon clockwise = ConvexPolygon::triangle({0, 0}, {0, 1}, {1, 0});
+  EXPECT_NEAR(clockwise.area(), 0.5, 1e-15);
+}
+
+TEST(ConvexPolygon, ClippingATriangleByARectangleGivesTheOverlap) {
+  // Triangle x, y >= 0, x + y <= 5 against the square [1, 3]^2: the square minus the corner triangle
+  // (2,3) (3,3) (3,2) of area 1/2, a pentagon.
+  const ConvexPolygon t = ConvexPolygon::triangle({0, 0}, {5, 0}, {0, 5});
+  const ConvexPolygon s = t.intersection(ConvexPolygon::rectangle({2, 2}, 1, 1));
+  EXPECT_EQ(s.size(), 5);
+  EXPECT_NEAR(s.area(), 3.5, 1e-14);
+}
+
+TEST(ConvexPolygon, CornersOnTheClipLineAreNotDuplicated) {
+  // x + y = 4 runs exactly through the square's corners (1,3) and (3,1): the overlap is their triangle.
+  const ConvexPolygon t = ConvexPolygon::triangle({0, 0}, {4, 0}, {0, 4});
+  const ConvexPolygon s = t.intersection(ConvexPolygon::rectangle({2, 2}, 1, 1));
+  EXPECT_EQ(s.size(), 3);
+  EXPECT_NEAR(s.area(), 2.0, 1e-14);
+}
+
+TEST(ConvexPolygon, ClipKeepsAtMostSevenCornersForATriangleInARectangle) {
+  // A triangle whose three corners stick out of four sides of the rectangle.
+  const ConvexPolygon t = ConvexPolygon::triangle({-3, -1.2}, {3, -1.2}, {0, 3.5});
+  const ConvexPolygon s = t.intersection(ConvexPolygon::rectangle({0, 0}, 1, 1));
+  EXPECT_LE(s.size(), 7);
+  EXPECT_GT(s.area(), 0);
+}
+
+TEST(ConvexPolygon, DisjointPolygonsGiveAnEmptyIntersection) {
+  const ConvexPolygon t = ConvexPolygon::triangle({0, 0}, {1, 0}, {0, 1});
+  EXPECT_TRUE(t.intersection(ConvexPolygon::rectangle({5, 5}, 1, 1)).empty());
+}
+
+TEST(ConvexPolygon, ContainsAndClosestPoint) {
+  const ConvexPolygon t = ConvexPolygon::triangle({0, 0}, {2, 0}, {0, 2});
+  EXPECT_TRUE(t.contains({0.5, 0.5}));
+  EXPECT_TRUE(t.contains({1, 0}));  // on an edge
+  EXPECT_FALSE(t.contains({1.5, 1.5}));
+  EXPECT_TRUE(t.closestPoint({1.5, 1.5}).isApprox(Vector2r(1, 1), 1e-15));
+  EXPECT_TRUE(t.closestPoint({-1, -2}).isApprox(Vector2r(0, 0), 1e-15));
+  EXPECT_TRUE(t.closestPoint({0.5, 0.5}).isApprox(Vector2r(0.5, 0.5), 1e-15));
+}
+
+}  // namespace
+}  // namespace roundedmesh

@@ -1,0 +1,149 @@
+"""Bad input gets an exception that names the argument, and the scene is left as it was."""
+import math
+import pickle
+
+import numpy as np
+import pytest
+from yade import ForceResetter, NewtonIntegrator, O, utils
+from yade.minieigenHP import Quaternion
+
+import roundedmesh as rm
+
+RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000)
+
+
+def scene_snapshot():
+    return len(O.bodies), {key: O.tags[key] for key in O.tags.keys()}
+
+
+@pytest.mark.parametrize("arguments, named", [
+    (dict(young=-1e6, poisson=0.3, density=1000), "young"),
+    (dict(young=0.0, poisson=0.3, density=1000), "young"),
+    (dict(young=math.nan, poisson=0.3, density=1000), "young"),
+    (dict(young=1e6, poisson=0.5, density=1000), "poisson"),
+    (dict(young=1e6, poisson=-1.0, density=1000), "poisson"),
+    (dict(young=1e6, poisson=0.3, density=0.0), "density"),
+    (dict(young=1e6, poisson=0.3, density=1000, damping=-0.1), "damping"),
+    (dict(young=1e6, poisson=0.3, density=1000, friction=math.nan), "friction"),
+])
+def test_material_out_of_range(arguments, named):
+    with pytest.raises(ValueError, match=named):
+        rm.HertzMaterial(**arguments)
+
+
+@pytest.mark.parametrize("radius, subdivisions, named", [
+    (-1.0, 2, "radius"), (0.0, 2, "radius"), (math.inf, 2, "radius"), (1.0, -1, "subdivisions"),
+    (1.0, 9, "subdivisions")])
+def test_icosphere_arguments(radius, subdivisions, named):
+    with pytest.raises(ValueError, match=named):
+        rm.Mesh.icosphere(radius, subdivisions)
+
+
+def test_mesh_without_volume():
+    flat = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], float)
+    with pytest.raises(ValueError, match="volume"):
+        rm.Mesh(flat, [[0, 1, 2], [0, 2, 1]], 1.0)
+
+
+def test_mesh_arrays():
+    sphere = rm.Mesh.icosphere(1.0, 1)
+    with pytest.raises(ValueError, match="radius"):
+        rm.Mesh(sphere.vertices, sphere.triangles, -1.0)
+    with pytest.raises(ValueError, match="radius"):
+        rm.Mesh(sphere.vertices, sphere.triangles, np.ones(3))
+    with pytest.raises(ValueError, match="triangles"):
+        rm.Mesh(sphere.vertices, sphere.triangles + 0.5, 1.0)
+    with pytest.raises(ValueError, match="vertices"):
+        rm.Mesh(sphere.vertices[:, :2], sphere.triangles, 1.0)
+    broken = sphere.vertices.copy()
+    broken[7, 1] = math.nan
+    with pytest.raises(ValueError, match="vertex 7 is not finite"):
+        rm.Mesh(broken, sphere.triangles, 1.0)
+
+
+@pytest.mark.parametrize("change, named", [
+    (dict(pos=(0, math.nan, 0)), "pos"),
+    (dict(pos=(0, 0)), "pos"),
+    (dict(ori=Quaternion(math.nan, 0, 0, 1)), "ori"),
+    (dict(ori=(1, 0, 0, 0)), "ori"),
+    (dict(material=None), "material"),
+    (dict(mesh="sphere.stl"), "mesh"),
+])
+def test_add_body_leaves_the_scene_as_it_was(change, named):
+    rm.add_body(rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 0), material=RUBBER)
+    before = scene_snapshot()
+    arguments = dict(mesh=rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 1), material=RUBBER)
+    arguments.update(change)
+    with pytest.raises((TypeError, ValueError), match=named):
+        rm.add_body(**arguments)
+    assert scene_snapshot() == before
+
+
+def test_assign_material_checks_the_body_and_the_material():
+    sphere_id = rm.add_body(rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 1), material=RUBBER)
+    yade_sphere = O.bodies.append(utils.sphere((1, 0, 0), 0.1))
+    wall = O.bodies.append(utils.wall(0, axis=2))
+    before = scene_snapshot()
+    with pytest.raises(ValueError, match="body_id: there is no body 99"):
+        rm.assign_material(99, RUBBER)
+    with pytest.raises(TypeError, match="material"):
+        rm.assign_material(wall, None)
+    with pytest.raises(ValueError, match=f"body {yade_sphere}: a Sphere cannot be"):
+        rm.assign_material(yade_sphere, RUBBER)
+    with pytest.raises(ValueError, match=f"body {sphere_id} is a rounded body"):
+        rm.assign_material(sphere_id, RUBBER)
+    assert scene_snapshot() == before
+
+
+def test_engine_options():
+    with pytest.raises(TypeError, match="unknown option.*gama"):
+        rm.engine(gama=3)
+    with pytest.raises(ValueError, match="gamma"):
+        rm.engine(gamma=-1)
+    with pytest.raises(ValueError, match="regime"):
+        rm.engine(regime="exact")
+
+
+def test_plane_contact_arguments():
+    mesh = rm.Mesh.icosphere(1.0, 1)
+    args = dict(mesh=mesh, pos=(0, 0, 0.99), ori=Quaternion.Identity, plane_point=(0, 0, 0),
+                plane_normal=(0, 0, 1), mesh_material=RUBBER, plane_material=RUBBER)
+    for name, bad in [("pos", (0, 0, math.nan)), ("plane_normal", (0, 0, 0)), ("vel", (math.inf, 0, 0))]:
+        with pytest.raises(ValueError, match=name):
+            rm.plane_contact(**{**args, name: bad})
+
+
+def bouncing_sphere_scene():
+    ball = rm.add_body(rm.Mesh.icosphere(0.025, 2), pos=(0, 0, 0.0249), material=RUBBER)
+    wall = O.bodies.append(utils.wall(0, axis=2, sense=1))
+    rm.assign_material(wall, RUBBER)
+    return ball
+
+
+def test_time_step_above_the_stability_limit_stops_the_run_before_any_force():
+    ball = bouncing_sphere_scene()
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
+    O.dt = 1.5 * rm.critical_timestep()
+    with pytest.raises(RuntimeError, match=f"stability limit .* rounded body {ball}"):
+        O.run(5, True)
+    assert O.iter == 0
+    assert O.bodies[ball].state.pos == (0, 0, 0.0249)
+    O.dt = 0.5 * rm.critical_timestep()
+    O.run(5, True)
+    assert O.iter == 5
+
+
+def test_engine_out_of_order():
+    bouncing_sphere_scene()
+    O.engines = [rm.engine(), ForceResetter(), NewtonIntegrator(gravity=(0, 0, -9.81))]
+    O.dt = 1e-5
+    with pytest.raises(RuntimeError, match="after ForceResetter and before NewtonIntegrator"):
+        O.run(1, True)
+
+
+def test_material_and_mesh_pickle_round_trip():
+    mesh = rm.Mesh(rm.Mesh.icosphere(0.5, 2).vertices + [1.0, 2.0, 3.0], rm.Mesh.icosphere(0.5, 2).triangles, 0.5)
+    copy = pickle.loads(pickle.dumps(mesh))
+    np.testing.assert_array_equal(copy.vertices, mesh.vertices)
+    np.testing.assert_array_equal(copy.centroid, mesh.centroid)
+    assert pickle.loads(pickle.dumps(RUBBER)) == RUBBER

@@ -1,0 +1,136 @@
+"""Rounded bodies inside YADE scenes: bodies, partners, reactions, save/load, erased bodies."""
+import os
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+from yade import ForceResetter, NewtonIntegrator, O, utils
+from yade.minieigenHP import Quaternion, Vector3
+
+import roundedmesh as rm
+from roundedmesh import scene as rm_scene
+from roundedmesh.scenes import S3, build_bouncing_sphere
+
+RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-3)
+STIFF = rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=1e-3)
+
+
+def test_a_rounded_body_is_an_ordinary_aspherical_yade_body():
+    mesh = rm.Mesh.icosphere(0.025, 2)
+    ori = Quaternion(Vector3(1, 1, 0).normalized(), 0.3)
+    body_id = rm.add_body(mesh, pos=(1, 2, 3), ori=ori, material=RUBBER)
+    body = O.bodies[body_id]
+    assert body.shape is None and body.aspherical and body.dynamic
+    assert body.state.mass == pytest.approx(RUBBER.density * mesh.volume, rel=1e-14)
+    np.testing.assert_allclose(np.array(body.state.inertia), RUBBER.density * mesh.inertia, rtol=1e-14)
+    assert body.state.pos == Vector3(1, 2, 3)
+    assert (body.state.ori.conjugate() * ori).toAxisAngle()[1] == pytest.approx(0, abs=1e-12)
+    assert rm.rounded_bodies()[body_id].volume == mesh.volume
+
+
+def one_step_against(partner, position):
+    ball = rm.add_body(rm.Mesh.icosphere(0.025, 3), pos=position, material=RUBBER)
+    rm.assign_material(partner, STIFF)
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(damping=0)]
+    O.dt = 1e-6
+    O.step()
+    return ball
+
+
+# The engine inside YADE gives what plane_contact gives for the same configuration, and the wall receives
+# the opposite force (YADE sums forces per body, so the comparison is exact to round-off).
+def test_wall_receives_the_reaction_and_forces_match_the_static_evaluation():
+    wall = O.bodies.append(utils.wall((0, 0, 0), axis=2, sense=0))
+    ball = one_step_against(wall, (0, 0, 0.024))
+    f_ball, f_wall = O.forces.f(ball), O.forces.f(wall)
+    assert f_ball[2] > 0
+    assert (f_ball + f_wall).norm() < 1e-12 * f_ball.norm()
+    static, _ = rm.plane_contact(rm.Mesh.icosphere(0.025, 3), (0, 0, 0.024), Quaternion.Identity, (0, 0, 0),
+                                 (0, 0, 1), RUBBER, STIFF)
+    assert (f_ball - static).norm() < 1e-12 * static.norm()
+    assert rm.statistics()["body_pairs"] == 1
+
+
+def test_box_top_acts_like_a_wall_away_from_its_edges():
+    box = O.bodies.append(utils.box((0, 0, -0.05), (0.2, 0.2, 0.05), fixed=True))
+    ball = one_step_against(box, (0.01, 0.02, 0.024))
+    static, _ = rm.plane_contact(rm.Mesh.icosphere(0.025, 3), (0.01, 0.02, 0.024), Quaternion.Identity,
+                                 (0, 0, 0), (0, 0, 1), RUBBER, STIFF)
+    assert (O.forces.f(ball) - static).norm() < 1e-12 * static.norm()
+    assert (O.forces.f(ball) + O.forces.f(box)).norm() < 1e-12 * static.norm()
+
+
+def run_and_record(steps):
+    O.run(steps, True)
+    s = O.bodies[0].state
+    return np.array(list(s.pos) + list(s.vel) + list(s.angVel))
+
+
+# O.save / O.load keep the rounded bodies: the same run continues identically after a reload, whether the
+# module's in-memory state is kept (the GUI's reload) or gone (a new process).
+def test_save_and_load_continue_the_same_run(tmp_path):
+    build_bouncing_sphere(2)
+    O.run(3000, True)
+    saved = str(tmp_path / "bounce.yade.gz")
+    O.save(saved)
+    expected = run_and_record(1500)
+
+    O.load(saved)
+    np.testing.assert_array_equal(run_and_record(1500), expected)
+
+    O.load(saved)
+    rm_scene._state = None
+    rm_scene._meshes.clear()
+    rm_scene._known.clear()
+    np.testing.assert_array_equal(run_and_record(1500), expected)
+
+    script = textwrap.dedent(f"""
+        import numpy as np, roundedmesh
+        from yade import O
+        O.load({saved!r})
+        O.run(1500, True)
+        s = O.bodies[0].state
+        print("STATE", repr(list(s.pos) + list(s.vel) + list(s.angVel)))
+    """)
+    output = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True,
+                            env=os.environ).stdout
+    state = eval(output.split("STATE", 1)[1])
+    np.testing.assert_array_equal(np.array(state), expected)
+
+
+def test_an_erased_body_leaves_the_engine():
+    sphere = build_bouncing_sphere(1)
+    O.run(100, True)
+    O.bodies.erase(sphere)
+    O.run(100, True)
+    assert 0 not in rm.rounded_bodies()
+    assert O.forces.f(1).norm() == 0
+
+
+def test_reset_forgets_everything():
+    build_bouncing_sphere(1)
+    assert rm.critical_timestep() < 1
+    O.reset()
+    assert rm.critical_timestep() == np.inf
+    assert rm.rounded_bodies() == {}
+
+
+# Bodies sharing a Mesh store it once in the scene.
+def test_a_shared_mesh_is_stored_once():
+    mesh = rm.Mesh.icosphere(0.02, 2)
+    for i in range(5):
+        rm.add_body(mesh, pos=(i, 0, 0), material=RUBBER)
+    assert sum(1 for key in O.tags.keys() if key.startswith("roundedmesh.mesh.")) == 1
+
+
+def test_critical_timestep_matches_the_formula_for_the_bouncing_sphere():
+    build_bouncing_sphere(3)
+    radius = (3 * rm.rounded_bodies()[0].volume / (4 * np.pi)) ** (1 / 3)
+    mass = O.bodies[0].state.mass
+    e_star = 1 / ((1 - 0.4 ** 2) / 1e6 + (1 - 0.4 ** 2) / 5e6)
+    omega = np.sqrt(2 * e_star * np.sqrt(radius * radius / 10) / mass)
+    zeta = 1e-3 * omega / 3
+    assert rm.critical_timestep() == pytest.approx(2 / omega * (np.sqrt(1 + zeta ** 2) - zeta), rel=1e-12)
+    assert S3.timestep < rm.critical_timestep() / 100

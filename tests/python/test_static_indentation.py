@@ -1,0 +1,75 @@
+"""Scene S2 (paper Section 3.1.1, Figs. 3-4): a meshed unit sphere pressed into a rigid plane, overlap swept
+from 0 to 5 % of R, against Hertz F = (4/3) E* sqrt(R) delta^3/2, with curvature prescribed (1/R)."""
+import math
+
+import numpy as np
+import pytest
+from yade.minieigenHP import Quaternion
+
+import roundedmesh as rm
+from roundedmesh.analytic import hertz_force, nrmse
+from roundedmesh.scenes import static_indentation
+
+MATERIAL = rm.HertzMaterial(young=1.0, poisson=0.0, density=1.0)  # E* = 1 Pa against the rigid plane
+OVERLAPS = np.linspace(0, 0.05, 51)[1:]
+
+
+def orientations(count=12, seed=1):
+    """The icosphere's own frame, then random rotations: the error depends on how the mesh meets the plane,
+    and the thresholds must hold for every pose, not a lucky one."""
+    rng = np.random.default_rng(seed)
+    yield Quaternion.Identity
+    for _ in range(count - 1):
+        w, x, y, z = rng.normal(size=4)
+        q = Quaternion(w, x, y, z)
+        q.normalize()
+        yield q
+
+
+def nrmse_per_pose(subdivisions, **engine_options):
+    mesh = rm.Mesh.icosphere(1.0, subdivisions)
+    hertz = hertz_force(1.0, 1.0, OVERLAPS)
+    return [nrmse(static_indentation(mesh, OVERLAPS, MATERIAL, q, **engine_options), hertz)
+            for q in orientations()]
+
+
+@pytest.fixture(scope="module")
+def errors():
+    return {k: nrmse_per_pose(k) for k in (1, 2, 3, 4)}
+
+
+# The issue's thresholds, for every pose. Measured worst cases: 2.2 % (162 nodes), 0.34 % (642 nodes).
+def test_162_nodes_within_3_percent(errors):
+    assert max(errors[2]) <= 0.03
+
+
+def test_642_nodes_within_1_percent(errors):
+    assert max(errors[3]) <= 0.01
+
+
+def test_error_decreases_with_refinement(errors):
+    worst = [max(errors[k]) for k in (1, 2, 3, 4)]
+    typical = [float(np.median(errors[k])) for k in (1, 2, 3, 4)]
+    assert worst == sorted(worst, reverse=True)
+    assert typical == sorted(typical, reverse=True)
+
+
+# With prescribed curvature the projected triangles tile the contact circle, so the direct regime, which
+# scales Eq. 7 by exact area fractions, reproduces Hertz to round-off: a check of the area fractions and of
+# the tiling (tolerance: round-off of ~1000 summed terms).
+def test_direct_regime_tiles_the_contact_circle():
+    mesh = rm.Mesh.icosphere(1.0, 3)
+    forces = static_indentation(mesh, OVERLAPS, MATERIAL, regime="direct")
+    np.testing.assert_allclose(forces, hertz_force(1.0, 1.0, OVERLAPS), rtol=1e-10)
+
+
+def test_force_is_normal_to_the_plane_and_scales_with_the_modulus():
+    mesh = rm.Mesh.icosphere(1.0, 3)
+    soft = rm.HertzMaterial(young=2e6, poisson=0.3, density=1000)
+    force, torque = rm.plane_contact(mesh, (0, 0, 0.98), Quaternion.Identity, (0, 0, 0), (0, 0, 1), soft, soft)
+    unit, _ = rm.plane_contact(mesh, (0, 0, 0.98), Quaternion.Identity, (0, 0, 0), (0, 0, 1), MATERIAL,
+                               static_indentation.__globals__["RIGID"])
+    e_star = 1.0 / (2 * (1 - 0.3 ** 2) / 2e6)
+    assert abs(force[0]) < 1e-12 * force[2] and abs(force[1]) < 1e-12 * force[2]
+    assert force[2] == pytest.approx(e_star * unit[2], rel=1e-12)
+    assert math.isfinite(torque.norm())
