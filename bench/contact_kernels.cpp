@@ -45,7 +45,7 @@ void BM_SphereContactStep(benchmark::State& state) {
   const bool box = state.range(1);
   const BodyMesh mesh(icosphere(0.025, subdivisions));
   ContactModel model;
-  model.bodies.push_back({0, mesh.sharedShape(), kParticle, kParticle.density * mesh.volume(), 0.025});
+  model.bodies.push_back(roundedBody(0, mesh, kParticle));
   if (box)
     model.partners.push_back({1, Box{Vector3r(0.2, 0.2, 0.05)}, kBox});
   else

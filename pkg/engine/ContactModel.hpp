@@ -9,6 +9,7 @@
 
 #include "pkg/law/Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp"
 #include "pkg/material/HertzMaterial.hpp"
+#include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/Box.hpp"
 #include "pkg/shape/Plane.hpp"
 #include "pkg/shape/RoundedMesh.hpp"
@@ -23,9 +24,10 @@ struct RoundedBody {
   int id;
   std::shared_ptr<const RoundedMesh> mesh;  // in the body's principal frame
   HertzMaterial material;
-  Real mass;               // [kg]
-  Real equivalentRadius;   // radius of the sphere of the same volume [m]
+  Real equivalentRadius;  // radius of the sphere of the same volume [m]
 };
+
+RoundedBody roundedBody(int id, const BodyMesh& mesh, const HertzMaterial& material);
 
 struct Partner {
   int id;

@@ -25,13 +25,17 @@ inline Real criticalTimeStep(Real mass, Real effectiveModulus, Real radius, Real
 
 // The scene's limit: criticalTimeStep over every rounded body and partner, each body taken as a sphere of
 // its volume-equivalent radius r (R* = r) at an overlap of r / 10, the deepest a Hertz contact is meant
-// to go. partnerMasses[p] is the mass of a partner that moves under forces, 0 for a driven or fixed one.
+// to go. An estimate for compact bodies: triangles much flatter than r, or an elongated body's lower
+// effective mass when a contact also turns it, lower the true limit.
+// bodyMasses[b]: the rounded bodies' masses [kg]; partnerMasses[p]: the mass of a partner that moves
+// under forces, 0 for a driven or fixed one.
 struct StabilityLimit {
   Real timeStep = std::numeric_limits<Real>::infinity();  // [s]
   int body = -1;     // index of the limiting rounded body
   int partner = -1;  // index of the limiting partner
 };
 
-StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>& partnerMasses);
+StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>& bodyMasses,
+                              const std::vector<Real>& partnerMasses);
 
 }  // namespace roundedmesh

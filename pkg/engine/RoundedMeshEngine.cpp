@@ -29,13 +29,6 @@ Real distanceToBox(const Box& box, const BodyState& state, const Vector3r& point
 
 }  // namespace
 
-void ContactData::resize(const ContactModel& model) {
-  bodyStates.resize(model.bodies.size());
-  partnerStates.resize(model.partners.size());
-  bodyWrenches.resize(model.bodies.size());
-  partnerWrenches.resize(model.partners.size());
-}
-
 bool boundsOverlap(const ContactModel& model, const ContactData& data, int b, int p) {
   const Vector3r& centre = data.bodyStates[b].position;
   const Real reach = model.bodies[b].mesh->sphereBoundRadius();

@@ -1,5 +1,7 @@
 #include "pkg/shape/BodyMesh.hpp"
 
+#include "pkg/shape/MeshTopology.hpp"
+
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +15,7 @@ Eigen::AlignedBox<Real, 3> boundingBox(const std::vector<Vector3r>& vertices) {
 }
 
 MassProperties solidMassProperties(const RoundedMesh& mesh) {
+  requireClosedOrientedSurface(mesh.triangles());
   const MassProperties mass = massProperties(mesh.vertices(), mesh.triangles());
   if (!(mass.volume > 1e-9 * boundingBox(mesh.vertices()).volume()))
     throw std::invalid_argument("mesh: the enclosed volume is " + std::to_string(mass.volume) +
@@ -39,12 +42,12 @@ BodyMesh::BodyMesh(const RoundedMesh& bodyFrameMesh, const Vector3r& inputCentro
       inputCentroid_(inputCentroid),
       inputOrientation_(inputOrientation.normalized()) {
   const MassProperties mass = solidMassProperties(bodyFrameMesh);
-  const PrincipalAxes axes = principalAxes(mass.inertia);
-  if (mass.centroid.norm() > 1e-9 * boundingBox(bodyFrameMesh.vertices()).diagonal().norm() ||
-      !axes.orientation.coeffs().isApprox(Quaternionr::Identity().coeffs()))
+  const Matrix3r offDiagonal = mass.inertia - Matrix3r(mass.inertia.diagonal().asDiagonal());
+  if (mass.centroid.norm() > 1e-6 * boundingBox(bodyFrameMesh.vertices()).diagonal().norm() ||
+      offDiagonal.norm() > 1e-6 * mass.inertia.trace())
     throw std::invalid_argument("mesh: the vertices are not in the principal frame of the mesh");
   volume_ = mass.volume;
-  principalMoments_ = axes.moments;
+  principalMoments_ = mass.inertia.diagonal();
 }
 
 }  // namespace roundedmesh

@@ -2,7 +2,8 @@
 // origin, principal axes of inertia along x, y, z) as YADE's aspherical bodies require, together with
 // its mass properties at unit density and the pose that puts it back where it was given:
 //   input-frame point = inputOrientation * body-frame point + inputCentroid.
-// Throws std::invalid_argument if the enclosed volume is not positive (open, inside-out or flat mesh).
+// Throws std::invalid_argument if the surface is not closed and consistently oriented (see
+// MeshTopology.hpp) or if the enclosed volume is not positive (inside-out or flat).
 #pragma once
 
 #include <memory>
@@ -15,9 +16,10 @@ namespace roundedmesh {
 class BodyMesh {
  public:
   explicit BodyMesh(const RoundedMesh& inputFrameMesh);
-  // Restores a mesh that is already in its principal frame (as saved with a scene), without moving it.
-  // Throws std::invalid_argument if it is not: centre of mass off the origin by more than 1e-9 of its
-  // size, or an inertia tensor that is not diagonal.
+  // Restores a mesh that is already in its principal frame (as saved with a scene), without moving it;
+  // the principal moments are the inertia tensor's diagonal. Throws std::invalid_argument if it is not in
+  // its principal frame: centre of mass off the origin, or off-diagonal inertia, above 1e-6 of the size
+  // (round-off of a saved mesh is about 1e-15).
   BodyMesh(const RoundedMesh& bodyFrameMesh, const Vector3r& inputCentroid, const Quaternionr& inputOrientation);
 
   const RoundedMesh& shape() const { return *shape_; }

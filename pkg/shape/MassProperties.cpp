@@ -5,11 +5,17 @@
 namespace roundedmesh {
 
 MassProperties massProperties(const std::vector<Vector3r>& vertices, const std::vector<Triangle>& triangles) {
+  // Moments are taken about the vertices' mean, not the origin: far from the origin the terms of the sums
+  // would be huge and cancel, losing every digit (a 2.5 cm body 100 m away would have a wrong inertia).
+  Vector3r reference = Vector3r::Zero();
+  for (const Vector3r& v : vertices) reference += v;
+  reference /= static_cast<Real>(vertices.size());
+
   Real volume = 0;
   Vector3r firstMoment = Vector3r::Zero();
-  Matrix3r secondMoment = Matrix3r::Zero();  // integral of x x^T over the solid
+  Matrix3r secondMoment = Matrix3r::Zero();  // integral of x x^T over the solid, x from the reference
   for (const Triangle& t : triangles) {
-    const Vector3r &a = vertices[t[0]], &b = vertices[t[1]], &c = vertices[t[2]];
+    const Vector3r a = vertices[t[0]] - reference, b = vertices[t[1]] - reference, c = vertices[t[2]] - reference;
     const Real det = a.dot(b.cross(c));  // six times the signed volume of the tetrahedron (0, a, b, c)
     const Vector3r sum = a + b + c;
     volume += det / 6;
@@ -18,8 +24,9 @@ MassProperties massProperties(const std::vector<Vector3r>& vertices, const std::
   }
   MassProperties p;
   p.volume = volume;
-  p.centroid = firstMoment / volume;
-  const Matrix3r central = secondMoment - volume * p.centroid * p.centroid.transpose();
+  const Vector3r centroid = firstMoment / volume;
+  p.centroid = reference + centroid;
+  const Matrix3r central = secondMoment - volume * centroid * centroid.transpose();
   p.inertia = central.trace() * Matrix3r::Identity() - central;
   return p;
 }

@@ -46,7 +46,7 @@ RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> t
         reject("triangles: triangle " + std::to_string(t) + " refers to vertex " + std::to_string(corner) +
                ", but there are " + std::to_string(vertexCount) + " vertices");
     if (!(std::isfinite(radii[t]) && radii[t] > 0))
-      reject("radii: radius of triangle " + std::to_string(t) + " must be positive and finite, got " +
+      reject("radius of triangle " + std::to_string(t) + " must be positive and finite, got " +
              std::to_string(radii[t]));
     const Vector3r &a = vertices_[tri[0]], &b = vertices_[tri[1]], &c = vertices_[tri[2]];
     const Vector3r doubleAreaNormal = (b - a).cross(c - a);

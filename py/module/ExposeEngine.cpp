@@ -28,9 +28,12 @@ PressureOptions pressureOptions(Real gamma, const std::string& regime) {
   return options;
 }
 
-RoundedBody roundedBody(int id, const BodyMesh& mesh, const HertzMaterial& material) {
-  return {id, mesh.sharedShape(), material, material.density * mesh.volume(),
-          std::cbrt(3 * mesh.volume() / (4 * M_PI))};
+std::vector<Real> toReals(const bp::object& sequence, size_t expected) {
+  if (static_cast<size_t>(bp::len(sequence)) != expected)
+    throw std::invalid_argument("expected " + std::to_string(expected) + " masses");
+  std::vector<Real> values(expected);
+  for (size_t i = 0; i < expected; ++i) values[i] = bp::extract<Real>(sequence[i]);
+  return values;
 }
 
 class Engine {
@@ -55,11 +58,11 @@ class Engine {
     return missing;
   }
 
-  // (time step [s], YADE id of the body, YADE id of the partner) of the most restrictive pair.
-  bp::tuple stabilityLimit(const bp::list& partnerMasses) const {
-    std::vector<Real> masses(model_.partners.size(), 0.0);
-    for (size_t p = 0; p < masses.size(); ++p) masses[p] = bp::extract<Real>(partnerMasses[p]);
-    const StabilityLimit limit = roundedmesh::stabilityLimit(model_, masses);
+  // (time step [s], YADE id of the body, YADE id of the partner) of the most restrictive pair, for the
+  // masses the bodies have in YADE now (a partner's mass 0 if it does not move under forces).
+  bp::tuple stabilityLimit(const bp::object& bodyMasses, const bp::object& partnerMasses) const {
+    const StabilityLimit limit = roundedmesh::stabilityLimit(model_, toReals(bodyMasses, model_.bodies.size()),
+                                                             toReals(partnerMasses, model_.partners.size()));
     if (limit.body < 0) return bp::make_tuple(limit.timeStep, -1, -1);
     return bp::make_tuple(limit.timeStep, model_.bodies[limit.body].id, model_.partners[limit.partner].id);
   }
@@ -112,7 +115,7 @@ void exposeEngine() {
       .def("add_partner", &Engine::addPartner, (bp::arg("body"), bp::arg("material")))
       .def("set_options", &Engine::setOptions, (bp::arg("gamma"), bp::arg("regime")))
       .def("step", &Engine::step, bp::arg("O"))
-      .def("stability_limit", &Engine::stabilityLimit, bp::arg("partner_masses"))
+      .def("stability_limit", &Engine::stabilityLimit, (bp::arg("body_masses"), bp::arg("partner_masses")))
       .add_property("statistics", &Engine::statistics);
 
   bp::def("partner_kind", +[](const bp::object& body) {

@@ -71,21 +71,22 @@ std::vector<Real> toPerTriangle(const bp::object& object, int triangleCount, con
   return std::vector<Real>(data, data + triangleCount);
 }
 
-np::ndarray toArray(const std::vector<Vector3r>& points) {
-  np::ndarray array = np::empty(bp::make_tuple(points.size(), 3), np::dtype::get_builtin<double>());
-  double* data = reinterpret_cast<double*>(array.get_data());
-  for (size_t i = 0; i < points.size(); ++i)
-    for (int k = 0; k < 3; ++k) data[3 * i + k] = points[i][k];
+namespace {
+
+// An (n, 3) array of Scalar from n rows that index like arrays (Vector3r, Triangle).
+template <class Scalar, class Row>
+np::ndarray rowsToArray(const std::vector<Row>& rows) {
+  np::ndarray array = np::empty(bp::make_tuple(rows.size(), 3), np::dtype::get_builtin<Scalar>());
+  Scalar* data = reinterpret_cast<Scalar*>(array.get_data());
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (int k = 0; k < 3; ++k) data[3 * i + k] = rows[i][k];
   return array;
 }
 
-np::ndarray toArray(const std::vector<Triangle>& triangles) {
-  np::ndarray array = np::empty(bp::make_tuple(triangles.size(), 3), np::dtype::get_builtin<long>());
-  long* data = reinterpret_cast<long*>(array.get_data());
-  for (size_t i = 0; i < triangles.size(); ++i)
-    for (int k = 0; k < 3; ++k) data[3 * i + k] = triangles[i][k];
-  return array;
-}
+}  // namespace
+
+np::ndarray toArray(const std::vector<Vector3r>& points) { return rowsToArray<double>(points); }
+np::ndarray toArray(const std::vector<Triangle>& triangles) { return rowsToArray<long>(triangles); }
 
 np::ndarray toArray(const std::vector<Real>& values) {
   np::ndarray array = np::empty(bp::make_tuple(values.size()), np::dtype::get_builtin<double>());

@@ -14,19 +14,12 @@ from yade import O
 from .scene import rounded_bodies
 
 
-def _rotation_matrix(q):
-    x, y, z, w = q  # YADE's Quaternion iterates as x, y, z, w
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
-
-
 def _surfaces():
     points, triangles, body_ids, radii = [], [], [], []
     offset = 0
     for body_id, mesh in sorted(rounded_bodies().items()):
         state = O.bodies[body_id].state
-        points.append(mesh.vertices @ _rotation_matrix(state.ori).T + np.array(state.pos))
+        points.append(mesh.vertices @ np.array(state.ori.toRotationMatrix()).T + np.array(state.pos))
         triangles.append(mesh.triangles + offset)
         body_ids.append(np.full(len(mesh.triangles), body_id))
         radii.append(mesh.radii)

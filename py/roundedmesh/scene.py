@@ -17,7 +17,10 @@ import base64
 import hashlib
 import json
 import math
+import numbers
 import uuid
+import warnings
+import weakref
 
 import numpy as np
 from yade import Body, ForceResetter, NewtonIntegrator, O, PyRunner
@@ -65,8 +68,8 @@ def _decode(text, dtype, columns=None):
     return array.reshape(-1, columns) if columns else array
 
 
-_meshes = {}  # mesh key -> Mesh: bodies that share a mesh share it in memory
-_known = {}   # id(Mesh) -> (key, Mesh); holding the Mesh keeps its id from being reused
+_meshes = weakref.WeakValueDictionary()  # mesh key -> Mesh: bodies that share a mesh share it in memory
+_keys = weakref.WeakKeyDictionary()      # Mesh -> its key, so that a mesh is hashed once
 
 
 def _mesh_record(mesh):
@@ -80,26 +83,26 @@ def _mesh_record(mesh):
 def _store_mesh(mesh):
     """The key of `mesh` in the scene's tags, writing its record there if the scene lacks it."""
     record = None
-    if id(mesh) not in _known:
+    if mesh not in _keys:
         record = _mesh_record(mesh)
-        key = hashlib.sha1(record.encode()).hexdigest()[:16]
-        _known[id(mesh)] = (key, mesh)
-        _meshes.setdefault(key, mesh)
-    key = _known[id(mesh)][0]
+        _keys[mesh] = hashlib.sha1(record.encode()).hexdigest()[:16]
+        _meshes.setdefault(_keys[mesh], mesh)
+    key = _keys[mesh]
     if not _tag("mesh." + key):
         _set_tag("mesh." + key, record or _mesh_record(mesh))
     return key
 
 
 def _load_mesh(key):
-    if key not in _meshes:
+    mesh = _meshes.get(key)
+    if mesh is None:
         r = json.loads(_tag("mesh." + key))
         w, x, y, z = r["orientation"]
         mesh = Mesh._restore(_decode(r["vertices"], "<f8", 3), _decode(r["triangles"], "<i8", 3),
                              _decode(r["radii"], "<f8"), Vector3(*r["centroid"]), Quaternion(w, x, y, z))
         _meshes[key] = mesh
-        _known[id(mesh)] = (key, mesh)
-    return _meshes[key]
+        _keys[mesh] = key
+    return mesh
 
 
 # --- input checks: each names the argument and runs before anything in the scene changes ---------------
@@ -112,15 +115,14 @@ def _require_material(material, name):
 
 def _finite_vector(value, name):
     try:
-        components = [float(c) for c in value]
+        components = [] if isinstance(value, (str, bytes)) else [float(c) for c in value]
     except (TypeError, ValueError):
         components = []
     if len(components) != 3:
         raise TypeError(f"{name}: expected three numbers, got {value!r}")
-    v = Vector3(*components)
-    if not all(math.isfinite(c) for c in v):
-        raise ValueError(f"{name}: must be finite, got {tuple(v)}")
-    return v
+    if not all(math.isfinite(c) for c in components):
+        raise ValueError(f"{name}: must be finite, got {tuple(components)}")
+    return Vector3(*components)
 
 
 def _rotation(value, name):
@@ -133,14 +135,35 @@ def _rotation(value, name):
     return q
 
 
-def _existing_body(body_id, name):
+def _body_or_none(body_id):
     try:
-        body = O.bodies[body_id]
-    except (IndexError, TypeError):
-        body = None
+        return O.bodies[body_id]
+    except IndexError:
+        return None
+
+
+def _existing_body(body_id, name):
+    if isinstance(body_id, bool) or not isinstance(body_id, numbers.Integral) or body_id < 0:
+        raise TypeError(f"{name}: expected a body id (a non-negative integer), got {body_id!r}")
+    body = _body_or_none(int(body_id))
     if body is None:
-        raise ValueError(f"{name}: there is no body {body_id!r} in the scene")
+        raise ValueError(f"{name}: there is no body {body_id} in the scene")
     return body
+
+
+def _materials(kind):
+    return {int(i): HertzMaterial(*(json.loads(r)["material"] if kind == "body" else json.loads(r)))
+            for i, r in _tags_named(kind).items()}
+
+
+def _require_one_deformable(material, others, name, other_kind):
+    """Two rigid bodies (young = inf) have no Hertz contact: refuse a rigid material if a rigid one is
+    already on the other side."""
+    if math.isinf(material.young):
+        rigid = sorted(i for i, m in _materials(others).items() if math.isinf(m.young))
+        if rigid:
+            raise ValueError(f"{name}: a rigid material (young=inf) cannot touch the rigid {other_kind} "
+                             f"{', '.join(map(str, rigid))}; give one side a finite modulus")
 
 
 # --- the public API ---------------------------------------------------------------------------------------
@@ -154,6 +177,7 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None):
     pos = _finite_vector(pos, "pos")
     ori = _rotation(ori, "ori")
     material = _require_material(material, "material")
+    _require_one_deformable(material, "partner", "material", "partner(s)")
 
     body = Body()
     body.aspherical = True
@@ -173,10 +197,11 @@ def assign_material(body_id, material):
     `material`. Assigning again replaces the material."""
     material = _require_material(material, "material")
     body = _existing_body(body_id, "body_id")
-    if _tag(f"body.{body_id}"):
-        raise ValueError(f"body_id: body {body_id} is a rounded body; its material is the one given to add_body")
+    if _tag(f"body.{body.id}"):
+        raise ValueError(f"body_id: body {body.id} is a rounded body; its material is the one given to add_body")
     partner_kind(body)
-    _set_tag(f"partner.{body_id}", json.dumps(_material_record(material)))
+    _require_one_deformable(material, "body", "material", "rounded bod(ies)")
+    _set_tag(f"partner.{body.id}", json.dumps(_material_record(material)))
     _new_revision()
 
 
@@ -190,10 +215,12 @@ def engine(label="", **options):
     if unknown:
         raise TypeError(f"engine: unknown option(s) {', '.join(unknown)}; known: {', '.join(_ENGINE_OPTIONS)}, label")
     chosen = {**_ENGINE_OPTIONS, **options}
-    try:
-        chosen["gamma"] = float(chosen["gamma"])
-    except (TypeError, ValueError):
-        raise TypeError(f"gamma: expected a number, got {chosen['gamma']!r}") from None
+    if isinstance(chosen["gamma"], bool) or not isinstance(chosen["gamma"], numbers.Real):
+        raise TypeError(f"gamma: expected a number, got {chosen['gamma']!r}")
+    chosen["gamma"] = float(chosen["gamma"])
+    for name, value in (("regime", chosen["regime"]), ("label", label)):
+        if not isinstance(value, str):
+            raise TypeError(f"{name}: expected a string, got {value!r}")
     Engine().set_options(**chosen)
     arguments = ", ".join(f"{k}={v!r}" for k, v in chosen.items())
     return PyRunner(command=f"{_ENGINE_COMMAND}({arguments})", iterPeriod=1, initRun=True, label=label)
@@ -203,7 +230,7 @@ def critical_timestep():
     """Largest stable O.dt for the current scene's contacts between rounded bodies and partners [s], inf if
     there are none (see doc/physics.md, "Time step"). Use a fraction of it for accuracy."""
     state = _current_state()
-    return state.stability[0] if state else math.inf
+    return state.stability()[0] if state else math.inf
 
 
 def statistics():
@@ -215,7 +242,8 @@ def statistics():
 
 def rounded_bodies():
     """{body id: Mesh} of the current scene's rounded bodies."""
-    return {int(i): _load_mesh(json.loads(record)["mesh"]) for i, record in _tags_named("body").items()}
+    return {int(i): _load_mesh(json.loads(record)["mesh"]) for i, record in _tags_named("body").items()
+            if _body_or_none(int(i)) is not None}
 
 
 # --- the engine's step ----------------------------------------------------------------------------------
@@ -226,30 +254,41 @@ class _SceneState:
     def __init__(self, revision):
         self.revision = revision
         self.engine = Engine()
+        self.meshes = {}  # keeps the meshes alive, and shared between bodies, while this state lives
+        self.body_ids, self.partner_ids = [], []
+        materials = []
         for body_id, record in sorted(_tags_named("body").items(), key=lambda item: int(item[0])):
             r = json.loads(record)
-            self.engine.add_body(int(body_id), _load_mesh(r["mesh"]), HertzMaterial(*r["material"]))
-        partner_masses = []
+            mesh = self.meshes.setdefault(r["mesh"], _load_mesh(r["mesh"]))
+            materials.append(HertzMaterial(*r["material"]))
+            self.engine.add_body(int(body_id), mesh, materials[-1])
+            self.body_ids.append(int(body_id))
         for body_id, record in sorted(_tags_named("partner").items(), key=lambda item: int(item[0])):
-            body = O.bodies[int(body_id)]
-            if body is None:
-                continue
-            self.engine.add_partner(body, HertzMaterial(*json.loads(record)))
-            partner_masses.append(body.state.mass if body.dynamic else 0.0)
-        self.stability = self.engine.stability_limit(partner_masses)
+            body = _body_or_none(int(body_id))
+            if body is not None:
+                materials.append(HertzMaterial(*json.loads(record)))
+                self.engine.add_partner(body, materials[-1])
+                self.partner_ids.append(int(body_id))
+        if any(m.friction > 0 for m in materials):
+            warnings.warn("roundedmesh: friction is not modelled yet; contacts are frictionless", RuntimeWarning)
         self.options = None
         self.checked_dt = None
-        self.engines_checked = False
+
+    def stability(self):
+        """(limit [s], body id, partner id) for the masses the bodies have in YADE now. A body erased since
+        the last step (the next step forgets it) is left out: infinite mass puts no limit."""
+        bodies = [_body_or_none(i) for i in self.body_ids]
+        partners = [_body_or_none(i) for i in self.partner_ids]
+        return self.engine.stability_limit([b.state.mass if b else math.inf for b in bodies],
+                                           [p.state.mass if p and p.dynamic else 0.0 for p in partners])
 
     def prepare(self, options):
         if options != self.options:
             self.engine.set_options(**options)
             self.options = options
-        if not self.engines_checked:
-            _check_engine_order()
-            self.engines_checked = True
+        _check_engines()
         if O.dt != self.checked_dt:
-            limit, body, partner = self.stability
+            limit, body, partner = self.stability()
             if O.dt > limit:
                 raise ValueError(
                     f"O.dt = {O.dt:g} s is above the stability limit {limit:g} s of the contact between rounded "
@@ -270,15 +309,18 @@ def _current_state():
     return _state
 
 
-def _check_engine_order():
-    kinds = [type(e) for e in O.engines]
-    ours = [i for i, e in enumerate(O.engines)
-            if isinstance(e, PyRunner) and e.command.startswith(_ENGINE_COMMAND)]
+def _check_engines():
+    """One roundedmesh engine, running every step, after ForceResetter and before NewtonIntegrator."""
+    engines = O.engines
+    ours = [i for i, e in enumerate(engines) if isinstance(e, PyRunner) and e.command.startswith(_ENGINE_COMMAND)]
     if len(ours) != 1:
         raise ValueError(f"O.engines holds {len(ours)} roundedmesh engines; it needs exactly one")
-    resetters = [i for i, k in enumerate(kinds) if k is ForceResetter]
-    integrators = [i for i, k in enumerate(kinds) if k is NewtonIntegrator]
-    if not any(i < ours[0] for i in resetters) or any(i < ours[0] for i in integrators):
+    runner = engines[ours[0]]
+    if runner.iterPeriod != 1 or runner.virtPeriod != 0 or runner.realPeriod != 0:
+        raise ValueError("O.engines: the roundedmesh engine must run every step (iterPeriod=1, no virtPeriod "
+                         "or realPeriod)")
+    before = engines[:ours[0]]
+    if not any(isinstance(e, ForceResetter) for e in before) or any(isinstance(e, NewtonIntegrator) for e in before):
         raise ValueError("O.engines: the roundedmesh engine must come after ForceResetter and before "
                          "NewtonIntegrator")
 

@@ -7,33 +7,10 @@
 #include <limits>
 
 #include "pkg/math/CirclePolygonArea.hpp"
+#include "tests/cpp/TestSupport.hpp"
 
 namespace roundedmesh {
 namespace {
-
-// Independent reference: integrate, over x, the length of the vertical chord shared by the disc and the
-// convex polygon (the polygon's chord from its edges, the disc's from sqrt(a^2 - x^2)). Midpoint rule with
-// n slices; the integrand is continuous with square-root ends, so the error is O(n^-1.5): about 1e-9
-// relative for n = 2e6.
-Real sliceIntegratedArea(Real a, const ConvexPolygon& polygon, int n = 2000000) {
-  Real area = 0;
-  const Real h = 2 * a / n;
-  for (int i = 0; i < n; ++i) {
-    const Real x = -a + (i + 0.5) * h;
-    Real lo = -std::sqrt(std::max(a * a - x * x, Real(0))), hi = -lo;
-    Real polyLo = std::numeric_limits<Real>::infinity(), polyHi = -polyLo;
-    for (int k = 0; k < polygon.size(); ++k) {
-      const Vector2r p = polygon[k], q = polygon[(k + 1) % polygon.size()];
-      if ((p.x() - x) * (q.x() - x) > 0 || p.x() == q.x()) continue;
-      const Real y = p.y() + (x - p.x()) / (q.x() - p.x()) * (q.y() - p.y());
-      polyLo = std::min(polyLo, y);
-      polyHi = std::max(polyHi, y);
-    }
-    if (polyLo > polyHi) continue;
-    area += std::max(std::min(hi, polyHi) - std::max(lo, polyLo), Real(0)) * h;
-  }
-  return area;
-}
 
 ConvexPolygon polygonOf(std::initializer_list<Vector2r> corners) {
   ConvexPolygon p;
@@ -77,7 +54,7 @@ TEST(CirclePolygonArea, CrossingCasesAgreeWithSliceIntegration) {
       polygonOf({{-0.8, -0.8}, {0.3, -1.2}, {1.2, -0.1}, {0.9, 0.9}, {-0.4, 1.1}, {-1.3, 0.2}}),  // hexagon
   };
   for (const ConvexPolygon& p : cases) {
-    const Real reference = sliceIntegratedArea(a, p);
+    const Real reference = test::sliceIntegratedArea(a, p);
     EXPECT_NEAR(circlePolygonArea(a, p), reference, 1e-7 * std::max(reference, 1e-3));
   }
 }

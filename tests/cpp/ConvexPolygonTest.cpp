@@ -28,12 +28,16 @@ TEST(ConvexPolygon, CornersOnTheClipLineAreNotDuplicated) {
   EXPECT_NEAR(s.area(), 2.0, 1e-14);
 }
 
-TEST(ConvexPolygon, ClipKeepsAtMostSevenCornersForATriangleInARectangle) {
-  // A triangle whose three corners stick out of four sides of the rectangle.
-  const ConvexPolygon t = ConvexPolygon::triangle({-3, -1.2}, {3, -1.2}, {0, 3.5});
+// A triangle whose corners all stick out, cutting all four sides of the square: three corners of the
+// square survive (one is cut off) and each side contributes crossings, seven corners in all.
+TEST(ConvexPolygon, ClippingATriangleByARectangleCanGiveSevenCorners) {
+  const ConvexPolygon t = ConvexPolygon::triangle({-1.6, -0.6}, {1.6, -1.4}, {0.3, 1.8});
   const ConvexPolygon s = t.intersection(ConvexPolygon::rectangle({0, 0}, 1, 1));
-  EXPECT_LE(s.size(), 7);
-  EXPECT_GT(s.area(), 0);
+  EXPECT_EQ(s.size(), 7);
+  for (int i = 0; i < s.size(); ++i) {  // every corner in both, up to the round-off of a crossing point
+    EXPECT_LT((t.closestPoint(s[i]) - s[i]).norm(), 1e-15);
+    EXPECT_LE(s[i].cwiseAbs().maxCoeff(), 1 + 1e-15);
+  }
 }
 
 TEST(ConvexPolygon, DisjointPolygonsGiveAnEmptyIntersection) {

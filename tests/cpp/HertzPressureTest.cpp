@@ -49,8 +49,9 @@ TEST(HertzPressure, IntegratesToTheDampedHertzForceOfEq7) {
   }
 }
 
-// Eq. 8 as printed, 3 A ddelta E* / (pi a^2) sqrt(a^2 - r^2), integrates to 2 E* A ddelta a: 1.5 times the
-// damping term of Eq. 7. This is why the pressure uses 2 A (doc/physics.md).
+// The reason for the choice above, kept as a check of doc/physics.md's claim rather than of the code:
+// Eq. 8 as printed, 3 A ddelta E* / (pi a^2) sqrt(a^2 - r^2), integrates to 2 E* A ddelta a, 1.5 times the
+// damping term of Eq. 7 (integrated by the same independent radial quadrature as above).
 TEST(HertzPressure, PrintedDampingCoefficientWouldOverdampByHalf) {
   const Real E = 1e6, R = 0.025, delta = 1e-3, A = 0.01, rate = 0.3;
   const Real a = std::sqrt(delta * R);

@@ -102,28 +102,62 @@ TEST(Law2IntegratedPressure, Eq14SelectsTheRegime) {
   EXPECT_EQ(totalLoad(geomsOf(patch, floorFor(patch, 2 * threshold)), phys, options).regime, Regime::Direct);
 }
 
-// Direct regime with c outside S: the force is Eq. 7 scaled by A(S n Omega) / A(Omega), and acts at c_eff.
+// Direct regime with c outside S: the force is Eq. 7 scaled by A(S n Omega) / A(Omega), the area taken
+// from an independent slice integration (1e-9 accurate, so 1e-7 relative), and acts at c_eff.
 TEST(Law2IntegratedPressure, DirectRegimeScalesByTheAreaFractionAndActsAtTheEffectivePoint) {
   const RoundedMesh patch = squarePatch(0.02, 1.0);
   // Floor tilted so that the circle's centre falls beside the patch.
-  const Real tilt = 0.012;
   const RoundedTriangle& t = patch.rounded(0);
-  const Vector3r normal = Vector3r(tilt, 0, 1).normalized();
+  const Vector3r normal = Vector3r(0.012, 0, 1).normalized();
   const Plane floor{t.sphereCentre - (t.radius - 1e-4) * normal, normal};
-  std::vector<PressureGeom> geoms = geomsOf(patch, floor);
-  ASSERT_FALSE(geoms.empty());
+  const std::vector<PressureGeom> geoms = geomsOf(patch, floor);
+  ASSERT_EQ(geoms.size(), 2u);
   PressureOptions direct;
   direct.regime = RegimeChoice::Direct;
   for (const PressureGeom& g : geoms) {
+    ASSERT_FALSE(g.polygon.contains(Vector2r::Zero()));  // c lies outside S
     const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(g, HertzPhys{1e6, 0}, direct);
     const Real eq7 = 4.0 / 3 * 1e6 * std::sqrt(g.radius) * std::pow(g.sphereOverlap, 1.5);
     const Real a = g.contactRadius;
-    EXPECT_NEAR(load.force, eq7 * circlePolygonArea(a, g.polygon) / (M_PI * a * a), 1e-12 * eq7);
-    if (load.force > 0) {
-      const Vector2r centreOfPressure(-load.moment.y() / load.force, load.moment.x() / load.force);
-      EXPECT_TRUE(centreOfPressure.isApprox(g.effectivePoint, 1e-12));
-    }
+    EXPECT_NEAR(load.force, eq7 * test::sliceIntegratedArea(a, g.polygon) / (M_PI * a * a), 1e-7 * eq7);
+    ASSERT_GT(load.force, 0);
+    const Vector2r centreOfPressure(-load.moment.y() / load.force, load.moment.x() / load.force);
+    EXPECT_TRUE(centreOfPressure.isApprox(g.effectivePoint, 1e-12));
   }
+}
+
+// Eq. 13, a moment that is not zero: a floor tilted by 4 mrad puts the circle's centre c 4 mm beside the
+// patch's centre, the patch still wholly inside the circle, where the integrand is smooth and the rule
+// nearly exact. Reference: a 40 x 40 Gauss-Legendre sum over the patch of the 3D moment r x (p dA n12), each
+// patch point projected onto the floor (area scaled by the cosine between the two normals), taken to plane
+// coordinates only at the end, so that the plane-coordinate convention r x n12 = (r_y, -r_x) is checked, not
+// assumed. Tolerance 1e-7 relative: the rule's error on this integrand (r <= 0.6 a; 3e-10 for the force).
+TEST(Law2IntegratedPressure, MomentOfAnOffCentreContactMatchesTheIntegratedMoment) {
+  const Real L = 0.01, R = 1.0, delta = 4e-4, E = 1e6;  // a = 0.02 m
+  const RoundedMesh patch = squarePatch(L, R);
+  const RoundedTriangle& t = patch.rounded(0);
+  const Vector3r n = Vector3r(0.004, 0, 1).normalized();
+  const std::vector<PressureGeom> geoms = geomsOf(patch, Plane{t.sphereCentre - (t.radius - delta) * n, n});
+  ASSERT_EQ(geoms.size(), 2u);
+  const NormalLoad load = totalLoad(geoms, HertzPhys{E, 0}, PressureOptions());
+  ASSERT_EQ(load.regime, Regime::Quadrature);
+
+  const PressureGeom& g = geoms[0];
+  const Real a = g.contactRadius, cosine = std::abs(n.z());
+  Vector3r moment3d = Vector3r::Zero();
+  for (int component = 0; component < 3; ++component)
+    moment3d[component] = test::integrateRectangle(
+        [&](Real x, Real y) {
+          const Vector3r point(x, y, 0);
+          const Vector3r r = point - g.centre - (point - g.centre).dot(g.normal) * g.normal;
+          const Real p = 2 * E / (M_PI * R) * std::sqrt(std::max(a * a - r.squaredNorm(), Real(0)));
+          return r.cross(p * cosine * g.normal)[component];
+        },
+        -L / 2, L / 2, -L / 2, L / 2, 40);
+  const Vector2r reference(moment3d.dot(g.tangent1), moment3d.dot(g.tangent2));
+  ASSERT_GT(reference.norm(), 0.1 * load.force * 0.004);  // a lever of about 4 mm
+  EXPECT_LT((load.moment - reference).norm(), 1e-7 * reference.norm());
+  EXPECT_NEAR(moment3d.dot(g.normal), 0, 1e-12 * reference.norm());
 }
 
 }  // namespace

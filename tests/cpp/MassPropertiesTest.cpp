@@ -71,6 +71,25 @@ TEST(MassProperties, IcosphereConvergesToTheSphere) {
   }
 }
 
+// Far from the origin the mass properties are those of the same mesh at the origin: moments are taken
+// about the vertices' mean, so nothing cancels. A 2.5 cm sphere 10 km away: the coordinates themselves
+// carry 1e4 * 1e-16 m of round-off, 4e-11 of the radius, hence 1e-9 relative.
+TEST(MassProperties, AreTheSameFarFromTheOrigin) {
+  const RoundedMesh here = icosphere(0.025, 3);
+  const RoundedMesh far = here.transformed(Matrix3r::Identity(), Vector3r(1e4, -3e3, 7e3));
+  const MassProperties p = massProperties(here.vertices(), here.triangles());
+  const MassProperties q = massProperties(far.vertices(), far.triangles());
+  EXPECT_NEAR(q.volume, p.volume, 1e-9 * p.volume);
+  EXPECT_LT((q.centroid - Vector3r(1e4, -3e3, 7e3)).norm(), 1e-9);
+  EXPECT_LT((q.inertia - p.inertia).norm(), 1e-9 * p.inertia.norm());
+}
+
+TEST(BodyMesh, AMeshGivenFarAwayRestoresFromItsPrincipalFrame) {
+  const BodyMesh body(icosphere(0.025, 3).transformed(Matrix3r::Identity(), Vector3r(3, 100, -40)));
+  const BodyMesh restored(body.shape(), body.inputCentroid(), body.inputOrientation());
+  EXPECT_TRUE(restored.principalMoments().isApprox(body.principalMoments(), 1e-9));
+}
+
 // A rotated, shifted cuboid is brought back to its principal frame: moments of the cuboid, and the
 // stored pose maps body-frame vertices back onto the input.
 TEST(BodyMesh, MovesTheMeshIntoItsPrincipalFrame) {

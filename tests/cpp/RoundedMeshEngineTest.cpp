@@ -18,7 +18,7 @@ const HertzMaterial kBoxMaterial{5e6, 0.4, 2000, 1e-3, 0};
 ContactModel sphereAgainst(PartnerShape shape, int subdivisions = 3, Real radius = 0.025) {
   const BodyMesh mesh(icosphere(radius, subdivisions));
   ContactModel model;
-  model.bodies.push_back({0, mesh.sharedShape(), kRubber, kRubber.density * mesh.volume(), radius});
+  model.bodies.push_back(roundedBody(0, mesh, kRubber));
   model.partners.push_back({1, shape, kBoxMaterial});
   return model;
 }
@@ -68,6 +68,27 @@ TEST(RoundedMeshEngine, IsFrameInvariant) {
   EXPECT_TRUE(rotated.bodyWrenches[0].force.isApprox(q * reference.bodyWrenches[0].force, 1e-11));
   EXPECT_LT((rotated.bodyWrenches[0].torque - q * reference.bodyWrenches[0].torque).norm(),
             1e-11 * reference.bodyWrenches[0].force.norm() * 0.025);
+}
+
+// The engine's relative motion: a box turning about its own x axis at w lifts the point of its top face
+// at distance y from that axis at w y, by hand; the contact then feels the same damping as with a box
+// translating upward at w y. A body spinning about its own vertical axis adds nothing.
+TEST(RoundedMeshEngine, RelativeMotionIncludesBothBodiesRotation) {
+  const ContactModel model = sphereAgainst(Box{Vector3r(0.2, 0.2, 0.05)});
+  const Real w = 3.0, y = 0.08;
+  const BodyState body = at(Vector3r(0, y, 0.05 + 0.0245));
+  BodyState turning = at(Vector3r::Zero());
+  turning.angularVelocity = Vector3r(w, 0, 0);
+  BodyState rising = at(Vector3r::Zero());
+  rising.velocity = Vector3r(0, 0, w * y);
+  const Real turned = run(model, body, turning).bodyWrenches[0].force.z();
+  const Real lifted = run(model, body, rising).bodyWrenches[0].force.z();
+  const Real resting = run(model, body).bodyWrenches[0].force.z();
+  EXPECT_GT(turned, 1.05 * resting);  // the damping term matters here
+  EXPECT_NEAR(turned, lifted, 1e-12 * lifted);
+  BodyState spinning = body;
+  spinning.angularVelocity = Vector3r(0, 0, 40);
+  EXPECT_NEAR(run(model, spinning).bodyWrenches[0].force.z(), resting, 1e-12 * resting);
 }
 
 // A YADE Wall is the plane through its position normal to its axis, on the side of the body (sense 0)

@@ -2,11 +2,13 @@
 // under test.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <functional>
 #include <vector>
 
-#include "pkg/common/Types.hpp"
+#include "pkg/math/ConvexPolygon.hpp"
 
 namespace roundedmesh::test {
 
@@ -42,6 +44,30 @@ inline Real integrateRectangle(const std::function<Real(Real, Real)>& f, Real x0
     for (int j = 0; j < n; ++j)
       sum += w[i] * w[j] * f(0.5 * (x0 + x1) + 0.5 * (x1 - x0) * x[i], 0.5 * (y0 + y1) + 0.5 * (y1 - y0) * x[j]);
   return 0.25 * (x1 - x0) * (y1 - y0) * sum;
+}
+
+// Independent reference: integrate, over x, the length of the vertical chord shared by the disc and the
+// convex polygon (the polygon's chord from its edges, the disc's from sqrt(a^2 - x^2)). Midpoint rule with
+// n slices; the integrand is continuous with square-root ends, so the error is O(n^-1.5): about 1e-9
+// relative for n = 2e6.
+inline Real sliceIntegratedArea(Real a, const ConvexPolygon& polygon, int n = 2000000) {
+  Real area = 0;
+  const Real h = 2 * a / n;
+  for (int i = 0; i < n; ++i) {
+    const Real x = -a + (i + 0.5) * h;
+    Real lo = -std::sqrt(std::max(a * a - x * x, Real(0))), hi = -lo;
+    Real polyLo = std::numeric_limits<Real>::infinity(), polyHi = -polyLo;
+    for (int k = 0; k < polygon.size(); ++k) {
+      const Vector2r p = polygon[k], q = polygon[(k + 1) % polygon.size()];
+      if ((p.x() - x) * (q.x() - x) > 0 || p.x() == q.x()) continue;
+      const Real y = p.y() + (x - p.x()) / (q.x() - p.x()) * (q.y() - p.y());
+      polyLo = std::min(polyLo, y);
+      polyHi = std::max(polyHi, y);
+    }
+    if (polyLo > polyHi) continue;
+    area += std::max(std::min(hi, polyHi) - std::max(lo, polyLo), Real(0)) * h;
+  }
+  return area;
 }
 
 }  // namespace roundedmesh::test

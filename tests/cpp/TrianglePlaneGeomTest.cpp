@@ -86,6 +86,12 @@ TEST(TrianglePlaneGeom, OverlapRateIsTheApproachSpeed) {
   motion.angular = Vector3r(0, 0, 2.0);  // spin about the normal does not change the overlap
   ASSERT_TRUE(trianglePlaneGeom(mesh, 0, floorAt(mesh.rounded(0).sphereCentre.z() - 0.99), motion, g));
   EXPECT_NEAR(g.overlapRate, 0.7, 1e-15);
+  // Spin about a horizontal axis through the body's origin: the floor's point under c moves vertically
+  // at (w x c).z = w_x c_y - w_y c_x, by hand.
+  motion.angular = Vector3r(1.5, -0.8, 0);
+  ASSERT_TRUE(trianglePlaneGeom(mesh, 0, floorAt(mesh.rounded(0).sphereCentre.z() - 0.99), motion, g));
+  EXPECT_NEAR(g.overlapRate, 0.7 + 1.5 * g.centre.y() + 0.8 * g.centre.x(), 1e-14);
+  EXPECT_GT(std::abs(1.5 * g.centre.y() + 0.8 * g.centre.x()), 0.01);
 }
 
 }  // namespace

@@ -64,6 +64,7 @@ def test_mesh_arrays():
 @pytest.mark.parametrize("change, named", [
     (dict(pos=(0, math.nan, 0)), "pos"),
     (dict(pos=(0, 0)), "pos"),
+    (dict(pos="123"), "pos"),
     (dict(ori=Quaternion(math.nan, 0, 0, 1)), "ori"),
     (dict(ori=(1, 0, 0, 0)), "ori"),
     (dict(material=None), "material"),
@@ -79,6 +80,22 @@ def test_add_body_leaves_the_scene_as_it_was(change, named):
     assert scene_snapshot() == before
 
 
+def test_open_or_misoriented_meshes_name_the_edge():
+    sphere = rm.Mesh.icosphere(1.0, 1)
+    with pytest.raises(ValueError, match="not closed: edge"):
+        rm.Mesh(sphere.vertices, sphere.triangles[1:], 1.0)
+    flipped = sphere.triangles.copy()
+    flipped[5] = flipped[5][::-1]
+    with pytest.raises(ValueError, match="triangles .* not consistently oriented"):
+        rm.Mesh(sphere.vertices, flipped, 1.0)
+
+
+def test_radius_errors_name_the_argument():
+    sphere = rm.Mesh.icosphere(1.0, 1)
+    with pytest.raises(ValueError, match="^radius of triangle 0"):
+        rm.Mesh(sphere.vertices, sphere.triangles, math.nan)
+
+
 def test_assign_material_checks_the_body_and_the_material():
     sphere_id = rm.add_body(rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 1), material=RUBBER)
     yade_sphere = O.bodies.append(utils.sphere((1, 0, 0), 0.1))
@@ -92,6 +109,28 @@ def test_assign_material_checks_the_body_and_the_material():
         rm.assign_material(yade_sphere, RUBBER)
     with pytest.raises(ValueError, match=f"body {sphere_id} is a rounded body"):
         rm.assign_material(sphere_id, RUBBER)
+    for not_an_id in (True, -1, 1.0, "1"):
+        with pytest.raises(TypeError, match="body_id: expected a body id"):
+            rm.assign_material(not_an_id, RUBBER)
+    assert scene_snapshot() == before
+
+
+def test_two_rigid_bodies_cannot_be_partners():
+    rigid = rm.HertzMaterial(young=math.inf, poisson=0.3, density=7800)
+    ball = rm.add_body(rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 1), material=rigid)
+    wall = O.bodies.append(utils.wall(0, axis=2))
+    before = scene_snapshot()
+    with pytest.raises(ValueError, match=f"material: a rigid material .* rigid rounded bod\\(ies\\) {ball}"):
+        rm.assign_material(wall, rigid)
+    assert scene_snapshot() == before
+    rm.assign_material(wall, RUBBER)  # a rigid body against a deformable partner is fine
+
+    O.reset()
+    rigid_wall = O.bodies.append(utils.wall(0, axis=2))
+    rm.assign_material(rigid_wall, rigid)
+    before = scene_snapshot()
+    with pytest.raises(ValueError, match=f"rigid partner\\(s\\) {rigid_wall}"):
+        rm.add_body(rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 1), material=rigid)
     assert scene_snapshot() == before
 
 
@@ -102,6 +141,12 @@ def test_engine_options():
         rm.engine(gamma=-1)
     with pytest.raises(ValueError, match="regime"):
         rm.engine(regime="exact")
+    with pytest.raises(TypeError, match="regime"):
+        rm.engine(regime=3)
+    with pytest.raises(TypeError, match="label"):
+        rm.engine(label=3)
+    with pytest.raises(TypeError, match="gamma"):
+        rm.engine(gamma="ten")
 
 
 def test_plane_contact_arguments():
@@ -141,8 +186,39 @@ def test_engine_out_of_order():
         O.run(1, True)
 
 
+# O.engines is checked every step, not only the first: a later edit is caught too.
+@pytest.mark.parametrize("edit, message", [
+    (lambda e: [e[0], e[2], e[1]], "after ForceResetter and before NewtonIntegrator"),
+    (lambda e: [e[0], e[1], rm.engine(), e[2]], "2 roundedmesh engines"),
+    (lambda e: [e[0], rm.engine(label="slow"), e[2]], None),
+])
+def test_engines_edited_during_a_run(edit, message):
+    bouncing_sphere_scene()
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
+    O.dt = 1e-5
+    O.run(3, True)
+    engines = edit(O.engines)
+    if message is None:  # an engine that does not run every step
+        engines[1].iterPeriod = 2
+        message = "must run every step"
+    O.engines = engines
+    with pytest.raises(RuntimeError, match=message):
+        O.run(3, True)
+
+
+def test_friction_is_announced_as_not_modelled():
+    bouncing_sphere_scene()
+    rm.assign_material(1, rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, friction=0.5))
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(damping=0)]
+    O.dt = 1e-5
+    with pytest.warns(RuntimeWarning, match="friction is not modelled yet"):
+        O.step()
+
+
+# A mesh given far from the origin (here 100 m away, 4000 radii) pickles and comes back exactly.
 def test_material_and_mesh_pickle_round_trip():
-    mesh = rm.Mesh(rm.Mesh.icosphere(0.5, 2).vertices + [1.0, 2.0, 3.0], rm.Mesh.icosphere(0.5, 2).triangles, 0.5)
+    sphere = rm.Mesh.icosphere(0.025, 3)
+    mesh = rm.Mesh(sphere.vertices + [3.0, 100.0, -40.0], sphere.triangles, 0.025)
     copy = pickle.loads(pickle.dumps(mesh))
     np.testing.assert_array_equal(copy.vertices, mesh.vertices)
     np.testing.assert_array_equal(copy.centroid, mesh.centroid)

@@ -28,18 +28,17 @@ def energy_lost(apex):
     return S3.height - apex  # per unit m g
 
 
-# The criterion at 642 nodes: rebound height and energy lost within 2 %. Measured: 0.08 % and
-# 0.23 %. The leap-frog's own error at this time step is below 0.02 % (doc/validation.md).
+# The criterion at 642 nodes: rebound height and energy lost within 2 %. The leap-frog's own error
+# at this time step is below 0.02 % (doc/validation.md).
 def test_642_node_rebound_matches_the_analytic_sphere(reference):
     apex = first_rebound(3)
     assert apex == pytest.approx(reference, rel=0.02)
     assert energy_lost(apex) == pytest.approx(energy_lost(reference), rel=0.02)
 
 
-def test_energy_error_decreases_with_refinement(reference):
-    errors = [abs(energy_lost(first_rebound(k)) / energy_lost(reference) - 1) for k in (1, 3)]
-    assert errors[1] < errors[0]
-
-
-def test_damping_dissipates_energy(reference):
-    assert 0.3 < energy_lost(reference) / (S3.height - S3.radius) < 0.7
+# Regression guard, 15 % above what this version measures: at 642 nodes the first rebound is 0.075 % low
+# and the energy lost 0.229 % high; at 42 nodes 4.71 % high.
+def test_errors_stay_at_their_measured_level(reference):
+    for k, measured in ((1, 0.0471), (3, 0.00229)):
+        error = abs(energy_lost(first_rebound(k)) / energy_lost(reference) - 1)
+        assert error <= 1.15 * measured, k

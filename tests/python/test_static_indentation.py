@@ -1,14 +1,12 @@
 """Scene S2 (paper Section 3.1.1, Figs. 3-4): a meshed unit sphere pressed into a rigid plane, overlap swept
 from 0 to 5 % of R, against Hertz F = (4/3) E* sqrt(R) delta^3/2, with curvature prescribed (1/R)."""
-import math
-
 import numpy as np
 import pytest
 from yade.minieigenHP import Quaternion
 
 import roundedmesh as rm
 from roundedmesh.analytic import hertz_force, nrmse
-from roundedmesh.scenes import static_indentation
+from roundedmesh.scenes import RIGID, static_indentation
 
 MATERIAL = rm.HertzMaterial(young=1.0, poisson=0.0, density=1.0)  # E* = 1 Pa against the rigid plane
 OVERLAPS = np.linspace(0, 0.05, 51)[1:]
@@ -38,13 +36,20 @@ def errors():
     return {k: nrmse_per_pose(k) for k in (1, 2, 3, 4)}
 
 
-# The issue's thresholds, for every pose. Measured worst cases: 2.2 % (162 nodes), 0.34 % (642 nodes).
+# The issue's thresholds, for every pose.
 def test_162_nodes_within_3_percent(errors):
     assert max(errors[2]) <= 0.03
 
 
 def test_642_nodes_within_1_percent(errors):
     assert max(errors[3]) <= 0.01
+
+
+# Regression guards, 15 % above what this version measures (worst of 12 poses: 8.94 %, 2.22 %, 0.335 %,
+# 0.093 %), so that a change that costs accuracy shows even while it stays within the issue's thresholds.
+def test_errors_stay_at_their_measured_level(errors):
+    for k, measured in ((1, 0.0894), (2, 0.0222), (3, 0.00335), (4, 0.00093)):
+        assert max(errors[k]) <= 1.15 * measured, k
 
 
 def test_error_decreases_with_refinement(errors):
@@ -63,13 +68,15 @@ def test_direct_regime_tiles_the_contact_circle():
     np.testing.assert_allclose(forces, hertz_force(1.0, 1.0, OVERLAPS), rtol=1e-10)
 
 
+# E* combines both materials (Eq. 3) and the force scales with it exactly; in the icosphere's own frame the
+# mesh is mirror-symmetric about the contact axis, so the force is normal and the torque vanishes to
+# round-off (1e-12 F R; measured 2e-16).
 def test_force_is_normal_to_the_plane_and_scales_with_the_modulus():
     mesh = rm.Mesh.icosphere(1.0, 3)
     soft = rm.HertzMaterial(young=2e6, poisson=0.3, density=1000)
     force, torque = rm.plane_contact(mesh, (0, 0, 0.98), Quaternion.Identity, (0, 0, 0), (0, 0, 1), soft, soft)
-    unit, _ = rm.plane_contact(mesh, (0, 0, 0.98), Quaternion.Identity, (0, 0, 0), (0, 0, 1), MATERIAL,
-                               static_indentation.__globals__["RIGID"])
+    unit, _ = rm.plane_contact(mesh, (0, 0, 0.98), Quaternion.Identity, (0, 0, 0), (0, 0, 1), MATERIAL, RIGID)
     e_star = 1.0 / (2 * (1 - 0.3 ** 2) / 2e6)
     assert abs(force[0]) < 1e-12 * force[2] and abs(force[1]) < 1e-12 * force[2]
     assert force[2] == pytest.approx(e_star * unit[2], rel=1e-12)
-    assert math.isfinite(torque.norm())
+    assert torque.norm() < 1e-12 * force.norm() * 1.0

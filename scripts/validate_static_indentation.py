@@ -1,0 +1,86 @@
+"""Scene S2 (paper Section 3.1.1, Figs. 3 and 4b): a meshed unit sphere pressed into a rigid plane, overlap
+0 to 5 % of R, against Hertz, with curvature prescribed (1/R on every triangle).
+
+    /usr/bin/python3 scripts/validate_static_indentation.py [--output out/validation]
+
+Writes:
+    static_indentation_force.csv   Fig. 3: force vs overlap for 42, 162, 642, 2562 nodes and Hertz
+    static_indentation_nrmse.csv   Fig. 4b: NRMSE vs nodes, icosphere frame and worst of 12 poses, for the
+                                   automatic regime choice and for each regime alone
+    static_indentation.png         both figures
+"""
+import argparse
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from yade.minieigenHP import Quaternion  # noqa: E402
+
+import roundedmesh as rm  # noqa: E402
+from roundedmesh.analytic import hertz_force, nrmse  # noqa: E402
+from roundedmesh.scenes import static_indentation  # noqa: E402
+
+MATERIAL = rm.HertzMaterial(young=1.0, poisson=0.0, density=1.0)  # E* = 1 Pa against the rigid plane
+OVERLAPS = np.linspace(0, 0.05, 51)[1:]
+NODES = {42: 1, 162: 2, 642: 3, 2562: 4}
+
+
+def poses(count=12, seed=1):
+    rng = np.random.default_rng(seed)
+    yield Quaternion.Identity
+    for _ in range(count - 1):
+        q = Quaternion(*rng.normal(size=4))
+        q.normalize()
+        yield q
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--output", default="out/validation")
+    args = parser.parse_args(argv)
+    os.makedirs(args.output, exist_ok=True)
+    hertz = hertz_force(1.0, 1.0, OVERLAPS)
+
+    forces = {n: static_indentation(rm.Mesh.icosphere(1.0, k), OVERLAPS, MATERIAL) for n, k in NODES.items()}
+    np.savetxt(os.path.join(args.output, "static_indentation_force.csv"),
+               np.column_stack([OVERLAPS, hertz] + [forces[n] for n in NODES]), delimiter=",",
+               header="overlap_over_R,hertz_over_ER2," + ",".join(f"mesh{n}" for n in NODES), comments="")
+
+    rows = []
+    for n, k in NODES.items():
+        mesh = rm.Mesh.icosphere(1.0, k)
+        row = [n]
+        for regime in ("auto", "quadrature", "direct"):
+            errors = [nrmse(static_indentation(mesh, OVERLAPS, MATERIAL, q, regime=regime), hertz) for q in poses()]
+            row += [errors[0], max(errors)]
+        rows.append(row)
+    rows = np.array(rows)
+    np.savetxt(os.path.join(args.output, "static_indentation_nrmse.csv"), rows, delimiter=",", comments="",
+               header="nodes,auto_frame,auto_worst,quadrature_frame,quadrature_worst,direct_frame,direct_worst")
+
+    figure, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
+    left.plot(OVERLAPS * 100, hertz, "k-", lw=2.5, label="Hertz (Eq. 6)")
+    for n in (42, 162, 642):
+        left.plot(OVERLAPS * 100, forces[n], "--", label=f"{n} nodes")
+    left.set(xlabel="overlap [% of R]", ylabel="F / (E* R^2)", title="Meshed sphere on a rigid plane (Fig. 3)")
+    left.legend()
+    for column, label, style in ((1, "auto, icosphere frame", "o-"), (2, "auto, worst of 12 poses", "s-"),
+                                 (4, "quadrature only, worst", "^--")):
+        right.loglog(rows[:, 0], rows[:, column] * 100, style, label=label)
+    right.set(xlabel="nodes", ylabel="NRMSE [%]", title="Convergence, prescribed curvature (Fig. 4b)")
+    right.legend()
+    right.grid(True, which="both", alpha=0.3)
+    figure.tight_layout()
+    figure.savefig(os.path.join(args.output, "static_indentation.png"), dpi=120)
+
+    print("nodes   NRMSE % (auto: frame / worst of 12)   quadrature only   direct only")
+    for r in rows:
+        print(f"{int(r[0]):5d}   {100 * r[1]:8.3f} / {100 * r[2]:.3f}            {100 * r[4]:8.3f}        {100 * r[6]:.1e}")
+    print(f"wrote {args.output}/static_indentation_force.csv, static_indentation_nrmse.csv, static_indentation.png")
+
+
+main(sys.argv[1:])
