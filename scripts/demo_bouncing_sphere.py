@@ -21,7 +21,6 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from yade import O, PyRunner  # noqa: E402
 
-import roundedmesh as rm  # noqa: E402
 from roundedmesh.analytic import apex_heights, bouncing_sphere, nrmse  # noqa: E402
 from roundedmesh.export import VtkSeries  # noqa: E402
 from roundedmesh.scenes import S3, build_bouncing_sphere, trace_height  # noqa: E402
