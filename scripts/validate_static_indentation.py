@@ -18,24 +18,13 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from yade.minieigenHP import Quaternion  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.analytic import hertz_force, nrmse  # noqa: E402
+from roundedmesh.scenes import S2_MATERIAL as MATERIAL, S2_OVERLAPS as OVERLAPS, s2_poses  # noqa: E402
 from roundedmesh.scenes import static_indentation  # noqa: E402
 
-MATERIAL = rm.HertzMaterial(young=1.0, poisson=0.0, density=1.0)  # E* = 1 Pa against the rigid plane
-OVERLAPS = np.linspace(0, 0.05, 51)[1:]
 NODES = {42: 1, 162: 2, 642: 3, 2562: 4}
-
-
-def poses(count=12, seed=1):
-    rng = np.random.default_rng(seed)
-    yield Quaternion.Identity
-    for _ in range(count - 1):
-        q = Quaternion(*rng.normal(size=4))
-        q.normalize()
-        yield q
 
 
 def main(argv):
@@ -55,7 +44,7 @@ def main(argv):
         mesh = rm.Mesh.icosphere(1.0, k)
         row = [n]
         for regime in ("auto", "quadrature", "direct"):
-            errors = [nrmse(static_indentation(mesh, OVERLAPS, MATERIAL, q, regime=regime), hertz) for q in poses()]
+            errors = [nrmse(static_indentation(mesh, OVERLAPS, MATERIAL, q, regime=regime), hertz) for q in s2_poses()]
             row += [errors[0], max(errors)]
         rows.append(row)
     rows = np.array(rows)

@@ -2,6 +2,7 @@
 demo and the benchmarks. Values the scene list leaves open are ours and documented in doc/validation.md.
 
 S2 -- static indentation of a meshed sphere against a rigid plane:
+    S2_MATERIAL, S2_OVERLAPS, s2_poses() (the parameters),
     static_indentation(mesh, overlaps, material, orientation) -> forces [N]
 S3 -- a meshed sphere dropped on a YADE Wall under gravity with normal damping:
     S3 (the parameters), build_bouncing_sphere(subdivisions) -> body id, trace_height(...)
@@ -18,6 +19,21 @@ from ._core import HertzMaterial, Mesh, plane_contact
 from .scene import add_body, assign_material, engine
 
 RIGID = HertzMaterial(young=math.inf, poisson=0.0, density=1.0)
+
+# S2: a unit sphere with E* = 1 Pa against the rigid plane, 50 overlaps up to 5 % of R.
+S2_MATERIAL = HertzMaterial(young=1.0, poisson=0.0, density=1.0)
+S2_OVERLAPS = np.linspace(0, 0.05, 51)[1:]
+
+
+def s2_poses(count=12, seed=1):
+    """The icosphere's own frame, then `count` - 1 random rotations: the error depends on how the mesh meets
+    the plane, so S2 is judged over several poses, not one."""
+    rng = np.random.default_rng(seed)
+    yield Quaternion.Identity
+    for _ in range(count - 1):
+        q = Quaternion(*rng.normal(size=4))
+        q.normalize()
+        yield q
 
 
 def static_indentation(mesh, overlaps, material, orientation=Quaternion.Identity, **engine_options):

@@ -63,6 +63,13 @@ def test_box_top_acts_like_a_wall_away_from_its_edges():
     assert (O.forces.f(ball) + O.forces.f(box)).norm() < 1e-12 * static.norm()
 
 
+def forget_module_memory():
+    """What a new process would have: no cached engine state or meshes, only the scene's tags."""
+    rm_scene._state = None
+    rm_scene._meshes.clear()
+    rm_scene._keys.clear()
+
+
 def run_and_record(steps):
     O.run(steps, True)
     s = O.bodies[0].state
@@ -82,9 +89,7 @@ def test_save_and_load_continue_the_same_run(tmp_path):
     np.testing.assert_array_equal(run_and_record(1500), expected)
 
     O.load(saved)
-    rm_scene._state = None
-    rm_scene._meshes.clear()
-    rm_scene._keys.clear()
+    forget_module_memory()
     np.testing.assert_array_equal(run_and_record(1500), expected)
 
     script = textwrap.dedent(f"""
@@ -117,9 +122,7 @@ def test_a_mesh_given_far_from_the_origin_survives_save_and_load(tmp_path):
     body = rm.add_body(far, pos=far.centroid, material=RUBBER)
     O.save(str(tmp_path / "far.yade"))
     O.load(str(tmp_path / "far.yade"))
-    rm_scene._state = None
-    rm_scene._meshes.clear()
-    rm_scene._keys.clear()
+    forget_module_memory()
     np.testing.assert_array_equal(rm.rounded_bodies()[body].vertices, far.vertices)
 
 

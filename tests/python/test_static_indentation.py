@@ -6,29 +6,13 @@ from yade.minieigenHP import Quaternion
 
 import roundedmesh as rm
 from roundedmesh.analytic import hertz_force, nrmse
-from roundedmesh.scenes import RIGID, static_indentation
-
-MATERIAL = rm.HertzMaterial(young=1.0, poisson=0.0, density=1.0)  # E* = 1 Pa against the rigid plane
-OVERLAPS = np.linspace(0, 0.05, 51)[1:]
-
-
-def orientations(count=12, seed=1):
-    """The icosphere's own frame, then random rotations: the error depends on how the mesh meets the plane,
-    and the thresholds must hold for every pose, not a lucky one."""
-    rng = np.random.default_rng(seed)
-    yield Quaternion.Identity
-    for _ in range(count - 1):
-        w, x, y, z = rng.normal(size=4)
-        q = Quaternion(w, x, y, z)
-        q.normalize()
-        yield q
-
+from roundedmesh.scenes import RIGID, S2_MATERIAL as MATERIAL, S2_OVERLAPS as OVERLAPS, s2_poses, static_indentation
 
 def nrmse_per_pose(subdivisions, **engine_options):
     mesh = rm.Mesh.icosphere(1.0, subdivisions)
     hertz = hertz_force(1.0, 1.0, OVERLAPS)
     return [nrmse(static_indentation(mesh, OVERLAPS, MATERIAL, q, **engine_options), hertz)
-            for q in orientations()]
+            for q in s2_poses()]
 
 
 @pytest.fixture(scope="module")
