@@ -1,32 +1,52 @@
 #include "pkg/shape/BodyMesh.hpp"
 
-#include "pkg/shape/MeshTopology.hpp"
-
+#include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "pkg/shape/Curvature.hpp"
+#include "pkg/shape/SurfaceRepair.hpp"
 
 namespace roundedmesh {
 namespace {
 
-Eigen::AlignedBox<Real, 3> boundingBox(const std::vector<Vector3r>& vertices) {
-  Eigen::AlignedBox<Real, 3> box;
-  for (const Vector3r& v : vertices) box.extend(v);
-  return box;
+MassProperties solidMassProperties(const std::vector<Vector3r>& vertices, const std::vector<Triangle>& triangles) {
+  requireValidSurface({vertices, triangles});
+  return massProperties(vertices, triangles);
 }
 
-MassProperties solidMassProperties(const RoundedMesh& mesh) {
-  requireClosedOrientedSurface(mesh.triangles());
-  const MassProperties mass = massProperties(mesh.vertices(), mesh.triangles());
-  if (!(mass.volume > 1e-9 * boundingBox(mesh.vertices()).volume()))
-    throw std::invalid_argument("mesh: the enclosed volume is " + std::to_string(mass.volume) +
-                                " m^3; a body needs a closed, outward-oriented surface with positive volume");
-  return mass;
+std::vector<Real> inverse(const std::vector<Real>& values) {
+  std::vector<Real> out;
+  out.reserve(values.size());
+  for (Real v : values) out.push_back(1 / v);
+  return out;
 }
 
 }  // namespace
 
+Real defaultMaxRadius(Real volume) { return 100 * std::cbrt(3 * volume / (4 * M_PI)); }
+
+BodyMesh::BodyMesh(const TriangleSurface& surface, const std::optional<std::vector<Real>>& prescribedCurvatures,
+                   std::optional<Real> maxRadius) {
+  const MassProperties mass = solidMassProperties(surface.vertices, surface.triangles);
+  if (prescribedCurvatures && prescribedCurvatures->size() != surface.triangles.size())
+    throw std::invalid_argument("curvature: " + std::to_string(prescribedCurvatures->size()) + " values given for " +
+                                std::to_string(surface.triangles.size()) + " triangles");
+  curvature_.source = prescribedCurvatures ? CurvatureSource::Prescribed : CurvatureSource::Computed;
+  curvature_.meanCurvatures = prescribedCurvatures ? *prescribedCurvatures : meanCurvature(surface).triangles;
+  curvature_.maxRadius = maxRadius.value_or(defaultMaxRadius(mass.volume));
+  placeInPrincipalFrame(
+      RoundedMesh(surface.vertices, surface.triangles, contactRadii(curvature_.meanCurvatures, curvature_.maxRadius)),
+      mass);
+}
+
 BodyMesh::BodyMesh(const RoundedMesh& inputFrameMesh) {
-  const MassProperties mass = solidMassProperties(inputFrameMesh);
+  const MassProperties mass = solidMassProperties(inputFrameMesh.vertices(), inputFrameMesh.triangles());
+  curvature_ = {inverse(inputFrameMesh.radii()), CurvatureSource::Prescribed, defaultMaxRadius(mass.volume)};
+  placeInPrincipalFrame(inputFrameMesh, mass);
+}
+
+void BodyMesh::placeInPrincipalFrame(const RoundedMesh& inputFrameMesh, const MassProperties& mass) {
   const PrincipalAxes axes = principalAxes(mass.inertia);
   volume_ = mass.volume;
   principalMoments_ = axes.moments;
@@ -37,17 +57,28 @@ BodyMesh::BodyMesh(const RoundedMesh& inputFrameMesh) {
 }
 
 BodyMesh::BodyMesh(const RoundedMesh& bodyFrameMesh, const Vector3r& inputCentroid,
-                   const Quaternionr& inputOrientation)
+                   const Quaternionr& inputOrientation, SurfaceCurvature curvature)
     : shape_(std::make_shared<const RoundedMesh>(bodyFrameMesh)),
+      curvature_(std::move(curvature)),
       inputCentroid_(inputCentroid),
       inputOrientation_(inputOrientation.normalized()) {
-  const MassProperties mass = solidMassProperties(bodyFrameMesh);
+  const MassProperties mass = solidMassProperties(bodyFrameMesh.vertices(), bodyFrameMesh.triangles());
+  if (curvature_.meanCurvatures.size() != bodyFrameMesh.radii().size())
+    throw std::invalid_argument("curvature: one value per triangle expected");
+  Eigen::AlignedBox<Real, 3> box;
+  for (const Vector3r& v : bodyFrameMesh.vertices()) box.extend(v);
   const Matrix3r offDiagonal = mass.inertia - Matrix3r(mass.inertia.diagonal().asDiagonal());
-  if (mass.centroid.norm() > 1e-6 * boundingBox(bodyFrameMesh.vertices()).diagonal().norm() ||
-      offDiagonal.norm() > 1e-6 * mass.inertia.trace())
+  if (mass.centroid.norm() > 1e-6 * box.diagonal().norm() || offDiagonal.norm() > 1e-6 * mass.inertia.trace())
     throw std::invalid_argument("mesh: the vertices are not in the principal frame of the mesh");
   volume_ = mass.volume;
   principalMoments_ = mass.inertia.diagonal();
+}
+
+TriangleSurface BodyMesh::inputFrameSurface() const {
+  TriangleSurface s{shape_->vertices(), shape_->triangles()};
+  const Matrix3r rotation = inputOrientation_.toRotationMatrix();
+  for (Vector3r& v : s.vertices) v = rotation * v + inputCentroid_;
+  return s;
 }
 
 }  // namespace roundedmesh

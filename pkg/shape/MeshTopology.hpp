@@ -1,15 +1,27 @@
-// Checks that triangles form a closed, edge-manifold, consistently oriented surface: every directed edge
-// (a, b) of a triangle appears in exactly one triangle, and its reverse (b, a) in exactly one other. Only
-// such a surface bounds a solid whose volume and inertia mean anything.
-// Throws std::invalid_argument naming the first offending edge and its triangles.
+// Edge defects of a triangle set that is meant to bound a solid. On a closed, edge-manifold, consistently
+// oriented surface every edge borders exactly two triangles, which run along it in opposite directions.
+// Only such a surface bounds a solid whose volume and inertia mean anything.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "pkg/shape/RoundedMesh.hpp"
 
 namespace roundedmesh {
 
-void requireClosedOrientedSurface(const std::vector<Triangle>& triangles);
+struct EdgeDefect {
+  int count = 0;                    // edges with this defect
+  std::array<int, 2> first{-1, -1};  // the vertices of the first one (lowest vertex indices)
+};
+
+struct EdgeDefects {
+  EdgeDefect boundary;     // borders a single triangle: the surface has a hole
+  EdgeDefect nonManifold;  // borders three or more triangles
+  EdgeDefect misoriented;  // borders two triangles that run along it in the same direction
+  bool any() const { return boundary.count + nonManifold.count + misoriented.count > 0; }
+};
+
+EdgeDefects findEdgeDefects(const std::vector<Triangle>& triangles);
 
 }  // namespace roundedmesh

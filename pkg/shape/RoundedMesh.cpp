@@ -64,7 +64,10 @@ RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> t
     r.radius = std::max(radii[t], r.circumradius);
     r.sphereCentre =
         r.circumcentre - std::sqrt(std::max(r.radius * r.radius - r.circumradius * r.circumradius, Real(0))) * r.normal;
-    sphereBoundRadius_ = std::max(sphereBoundRadius_, r.sphereCentre.norm() + r.radius);
+    // Contact only ever involves the triangle's cap: the part of the sphere on the outer side of the
+    // triangle's plane, which lies within the circumradius of the circumcentre (R >= circumradius).
+    sphereBoundRadius_ = std::max(sphereBoundRadius_, std::min(r.sphereCentre.norm() + r.radius,
+                                                               r.circumcentre.norm() + r.circumradius));
   }
 }
 

@@ -35,8 +35,9 @@ class RoundedMesh {
   const RoundedTriangle& rounded(int t) const { return rounded_[t]; }
   int triangleCount() const { return static_cast<int>(triangles_.size()); }
   std::vector<Real> radii() const;
-  // Radius of the ball around the body-frame origin that holds every encompassing sphere: no contact
-  // partner outside it can overlap any of them.
+  // Radius of the ball around the body-frame origin that holds every triangle's cap (the part of its
+  // encompassing sphere beyond the triangle's plane, where all contact pressure acts): no partner outside
+  // it can touch the body. Bounded even for the huge radii of nearly flat triangles.
   Real sphereBoundRadius() const { return sphereBoundRadius_; }
   // The same mesh moved rigidly: x -> rotation * x + translation.
   RoundedMesh transformed(const Matrix3r& rotation, const Vector3r& translation) const;

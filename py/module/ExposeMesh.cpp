@@ -1,23 +1,110 @@
-// roundedmesh.Mesh: a closed rounded mesh in its principal frame (pkg/shape/BodyMesh.hpp).
+// roundedmesh.Mesh: a closed rounded mesh in its principal frame (pkg/shape/BodyMesh.hpp), from arrays,
+// files or the shape generators.
 #include <boost/python.hpp>
+#include <algorithm>
+#include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 
+#include "pkg/io/MeshFile.hpp"
+#include "pkg/shape/BlendedShape.hpp"
 #include "pkg/shape/BodyMesh.hpp"
+#include "pkg/shape/Curvature.hpp"
+#include "pkg/shape/Cylinder.hpp"
+#include "pkg/shape/Distortion.hpp"
 #include "pkg/shape/Icosphere.hpp"
+#include "pkg/shape/Spheroid.hpp"
+#include "pkg/shape/SurfaceRepair.hpp"
 #include "py/module/NumpyConversion.hpp"
 
 namespace roundedmesh::python {
 namespace {
 
-std::shared_ptr<BodyMesh> makeMesh(const bp::object& vertices, const bp::object& triangles, const bp::object& radius) {
-  std::vector<Triangle> corners = toTriangles(triangles, "triangles");
-  const std::vector<Real> radii = toPerTriangle(radius, static_cast<int>(corners.size()), "radius");
-  return std::make_shared<BodyMesh>(RoundedMesh(toPoints(vertices, "vertices"), std::move(corners), radii));
+using MeshPtr = std::shared_ptr<BodyMesh>;
+
+std::optional<Real> optionalReal(const bp::object& value) {
+  if (value.is_none()) return std::nullopt;
+  return bp::extract<Real>(value)();
 }
 
-std::shared_ptr<BodyMesh> makeIcosphere(Real radius, int subdivisions) {
-  return std::make_shared<BodyMesh>(icosphere(radius, subdivisions));
+// radius: None (compute the curvature from the mesh, Eq. 1), one radius, or one per triangle [m]; an
+// infinite radius is flat, a negative one concave.
+std::optional<std::vector<Real>> prescribedCurvatures(const bp::object& radius, int triangleCount) {
+  if (radius.is_none()) return std::nullopt;
+  std::vector<Real> curvatures = toPerTriangle(radius, triangleCount, "radius");
+  for (std::size_t t = 0; t < curvatures.size(); ++t) {
+    if (std::isnan(curvatures[t]) || curvatures[t] == 0)
+      raiseValueError("radius: triangle " + std::to_string(t) + " has radius " + std::to_string(curvatures[t]) +
+                      "; use a positive radius, inf for flat, a negative one for concave, or None to compute it");
+    curvatures[t] = 1 / curvatures[t];
+  }
+  return curvatures;
+}
+
+MeshPtr bodyMesh(const TriangleSurface& surface, const bp::object& radius, const bp::object& maxRadius) {
+  return std::make_shared<BodyMesh>(surface, prescribedCurvatures(radius, static_cast<int>(surface.triangles.size())),
+                                    optionalReal(maxRadius));
+}
+
+// The generators' curvature: "exact" (the smooth shape's, prescribed) or "computed" (Eq. 1 from the mesh).
+MeshPtr generated(const TriangleSurface& surface, const std::string& curvature, std::vector<Real> exact) {
+  if (curvature == "computed") return std::make_shared<BodyMesh>(surface, std::nullopt);
+  if (curvature == "exact") return std::make_shared<BodyMesh>(surface, std::move(exact));
+  raiseValueError("curvature must be 'exact' or 'computed', got '" + curvature + "'");
+}
+
+MeshPtr fromArrays(const bp::object& vertices, const bp::object& triangles, const bp::object& radius,
+                   const bp::object& maxRadius) {
+  PolygonSoup soup;
+  soup.points = toPoints(vertices, "vertices");
+  for (const Triangle& t : toTriangles(triangles, "triangles")) {
+    for (int corner : t)
+      if (corner < 0) raiseValueError("triangles: negative vertex index " + std::to_string(corner));
+    soup.polygons.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
+  }
+  TriangleSurface surface;
+  try {
+    surface = repairedSurface(soup);
+  } catch (const std::invalid_argument& e) {
+    raiseValueError(std::string("mesh: ") + e.what());
+  }
+  return bodyMesh(surface, radius, maxRadius);
+}
+
+MeshPtr load(const std::string& path, Real scale, const bp::object& radius, const bp::object& maxRadius) {
+  return bodyMesh(readMeshFile(path, scale), radius, maxRadius);
+}
+
+void save(const BodyMesh& mesh, const std::string& path) { writeMeshFile(path, mesh.inputFrameSurface()); }
+
+MeshPtr makeIcosphere(Real radius, int subdivisions, Real distortion, unsigned seed, const std::string& curvature) {
+  const TriangleSurface s = distortion == 0 ? icosphereSurface(radius, subdivisions)
+                                            : distortedIcosphereSurface(radius, subdivisions, distortion, seed);
+  return generated(s, curvature, std::vector<Real>(s.triangles.size(), 1 / radius));
+}
+
+MeshPtr makeSpheroid(Real a, Real b, int nodes, const std::string& curvature) {
+  const TriangleSurface s = spheroidSurface(a, b, nodes);
+  return generated(s, curvature, spheroidTriangleCurvatures(a, b, s));
+}
+
+MeshPtr makeCylinder(Real radius, Real length, int nodes, const std::string& curvature) {
+  const TriangleSurface s = cylinderSurface(radius, length, nodes);
+  return generated(s, curvature, cylinderTriangleCurvatures(radius, s));
+}
+
+// Mesh._blended_shape(blend, primitives, nodes, volume): primitives as (a, b, radius) triples in shape units;
+// returns (mesh, scale). roundedmesh.Mesh.reference_shape reads them from shapes.json.
+bp::tuple makeBlendedShape(Real blend, const bp::list& primitives, int nodes, Real volume) {
+  BlendedShape shape{blend, {}};
+  for (int i = 0; i < bp::len(primitives); ++i) {
+    const bp::object p = primitives[i];
+    shape.primitives.push_back({bp::extract<Vector3r>(p[0])(), bp::extract<Vector3r>(p[1])(), bp::extract<Real>(p[2])()});
+  }
+  Real scale = 0;
+  const TriangleSurface s = blendedShapeSurface(shape, nodes, volume, &scale);
+  return bp::make_tuple(std::make_shared<BodyMesh>(s, std::nullopt), scale);
 }
 
 std::vector<Vector3r> perTriangle(const BodyMesh& mesh, Vector3r RoundedTriangle::*field) {
@@ -32,13 +119,18 @@ std::vector<Real> areas(const BodyMesh& mesh) {
   return out;
 }
 
+TriangleSurface bodySurface(const BodyMesh& m) { return {m.shape().vertices(), m.shape().triangles()}; }
+
 np::ndarray centroid(const BodyMesh& m) { return toArray(std::vector<Real>(m.inputCentroid().data(), m.inputCentroid().data() + 3)); }
 np::ndarray inertia(const BodyMesh& m) { return toArray(std::vector<Real>(m.principalMoments().data(), m.principalMoments().data() + 3)); }
+std::string curvatureMode(const BodyMesh& m) {
+  return m.curvature().source == CurvatureSource::Computed ? "computed" : "prescribed";
+}
 
 std::string repr(const BodyMesh& m) {
   std::ostringstream s;
   s << "<roundedmesh.Mesh: " << m.shape().vertices().size() << " vertices, " << m.shape().triangleCount()
-    << " triangles, volume " << m.volume() << " m^3>";
+    << " triangles, volume " << m.volume() << " m^3, " << curvatureMode(m) << " curvature>";
   return s.str();
 }
 
@@ -48,44 +140,112 @@ bp::tuple reduce(const bp::object& self) {
   const BodyMesh& m = bp::extract<const BodyMesh&>(self);
   return bp::make_tuple(bp::import("roundedmesh").attr("_restore_mesh"),
                         bp::make_tuple(toArray(m.shape().vertices()), toArray(m.shape().triangles()),
-                                       toArray(m.shape().radii()), m.inputCentroid(), m.inputOrientation()));
+                                       toArray(m.shape().radii()), m.inputCentroid(), m.inputOrientation(),
+                                       toArray(m.curvature().meanCurvatures), curvatureMode(m),
+                                       m.curvature().maxRadius));
 }
 
-// Unpickling: a mesh already in its principal frame, with the pose it was given in.
-std::shared_ptr<BodyMesh> restoreMesh(const bp::object& vertices, const bp::object& triangles, const bp::object& radii,
-                                      const Vector3r& centroid, const Quaternionr& orientation) {
+// Unpickling: a mesh already in its principal frame, with the pose it was given in. Scenes saved before
+// curvatures were kept have none: the radii's 1/R, prescribed, is then what they were.
+MeshPtr restoreMesh(const bp::object& vertices, const bp::object& triangles, const bp::object& radii,
+                    const Vector3r& centroid, const Quaternionr& orientation, const bp::object& curvatures,
+                    const std::string& mode, const bp::object& maxRadius) {
   std::vector<Triangle> corners = toTriangles(triangles, "triangles");
-  const std::vector<Real> r = toPerTriangle(radii, static_cast<int>(corners.size()), "radii");
-  return std::make_shared<BodyMesh>(RoundedMesh(toPoints(vertices, "vertices"), std::move(corners), r), centroid,
-                                    orientation);
+  const int count = static_cast<int>(corners.size());
+  const std::vector<Real> r = toPerTriangle(radii, count, "radii");
+  RoundedMesh shape(toPoints(vertices, "vertices"), std::move(corners), r);
+  SurfaceCurvature curvature;
+  if (curvatures.is_none()) {
+    for (Real radius : r) curvature.meanCurvatures.push_back(1 / radius);
+  } else {
+    curvature.meanCurvatures = toPerTriangle(curvatures, count, "curvatures");
+  }
+  curvature.source = mode == "computed" ? CurvatureSource::Computed : CurvatureSource::Prescribed;
+  curvature.maxRadius = maxRadius.is_none() ? *std::max_element(r.begin(), r.end()) : bp::extract<Real>(maxRadius)();
+  return std::make_shared<BodyMesh>(shape, centroid, orientation, std::move(curvature));
 }
+
+void translateFileNotFound(const FileNotFound& e) { PyErr_SetString(PyExc_FileNotFoundError, e.what()); }
+
+const char* const kRadiusDoc =
+    "radius: None to compute each triangle's curvature from the mesh (Eq. 1), or a radius of curvature [m] for\n"
+    "all triangles or one per triangle (inf: flat, negative: concave). max_radius [m]: the radius flat and\n"
+    "concave triangles use in contact (default 100 volume-equivalent radii); see doc/physics.md.";
 
 }  // namespace
 
 void exposeMesh() {
-  bp::class_<BodyMesh, std::shared_ptr<BodyMesh>>(
+  bp::register_exception_translator<FileNotFound>(&translateFileNotFound);
+  const std::string arraysDoc = std::string(
+      "Mesh.from_arrays(vertices, triangles, radius=None, max_radius=None): vertices (n, 3) [m], triangles\n"
+      "(m, 3) vertex indices counter-clockwise seen from outside. Checked and repaired like a file\n"
+      "(see Mesh.load).\n") + kRadiusDoc;
+  const std::string loadDoc = std::string(
+      "Mesh.load(path, scale=1.0, radius=None, max_radius=None): reads OBJ, STL (ASCII or binary), OFF or PLY,\n"
+      "multiplies coordinates by scale (0.001 for millimetres). Duplicate vertices are welded, faces with more\n"
+      "than 3 corners triangulated and an inside-out surface reversed; a surface that is not closed,\n"
+      "edge-manifold and consistently oriented, has degenerate triangles, non-finite coordinates or no volume\n"
+      "raises ValueError naming the file, the defect and where it is.\n") + kRadiusDoc;
+  bp::class_<BodyMesh, MeshPtr>(
       "Mesh",
       "A closed triangulated rounded body shape, stored in its principal frame (centre of mass at the origin,\n"
       "principal axes of inertia along x, y, z). Each triangle has a radius of curvature.\n\n"
-      "Mesh(vertices, triangles, radius): vertices (n, 3) [m], triangles (m, 3) vertex indices counter-clockwise\n"
-      "seen from outside, radius [m]: one value for all triangles or one per triangle.",
+      "Mesh(vertices, triangles, radius=None, max_radius=None) is Mesh.from_arrays.",
       bp::no_init)
-      .def("__init__", bp::make_constructor(&makeMesh, bp::default_call_policies(),
-                                            (bp::arg("vertices"), bp::arg("triangles"), bp::arg("radius"))))
-      .def("icosphere", &makeIcosphere, (bp::arg("radius"), bp::arg("subdivisions")),
+      .def("__init__", bp::make_constructor(&fromArrays, bp::default_call_policies(),
+                                            (bp::arg("vertices"), bp::arg("triangles"), bp::arg("radius") = bp::object(),
+                                             bp::arg("max_radius") = bp::object())))
+      .def("from_arrays", &fromArrays, (bp::arg("vertices"), bp::arg("triangles"), bp::arg("radius") = bp::object(),
+                                             bp::arg("max_radius") = bp::object()), arraysDoc.c_str())
+      .staticmethod("from_arrays")
+      .def("load", &load, (bp::arg("path"), bp::arg("scale") = 1.0, bp::arg("radius") = bp::object(),
+                       bp::arg("max_radius") = bp::object()), loadDoc.c_str())
+      .staticmethod("load")
+      .def("save", &save, (bp::arg("path")),
+           "Writes the (repaired) surface, in the frame it was given in, as OBJ, STL, OFF or PLY by the path's\n"
+           "extension. STL keeps single precision; the others read back exactly.")
+      .def("icosphere", &makeIcosphere,
+           (bp::arg("radius"), bp::arg("subdivisions"), bp::arg("distortion") = 0.0, bp::arg("seed") = 0,
+            bp::arg("curvature") = "exact"),
            "Icosphere of `radius` [m]: the icosahedron subdivided `subdivisions` times (0..8), nodes on the sphere;\n"
-           "12, 42, 162, 642, 2562 nodes for 0..4. Every triangle's radius of curvature is `radius`.")
+           "12, 42, 162, 642, 2562 nodes for 0..4. distortion > 0: nodes moved at random along the sphere until\n"
+           "the distortion D (Eq. 26) is that value (Fig. 4a), reproducibly for a given seed.\n"
+           "curvature: 'exact' (every triangle has the sphere's radius) or 'computed' (Eq. 1 from the mesh).")
       .staticmethod("icosphere")
+      .def("spheroid", &makeSpheroid, (bp::arg("a"), bp::arg("b"), bp::arg("nodes"), bp::arg("curvature") = "exact"),
+           "Spheroid with semi-axis a [m] along z and b [m] across, about `nodes` nodes (within 2 %), near-\n"
+           "equilateral triangles. curvature: 'exact' (the spheroid's mean curvature under each triangle) or\n"
+           "'computed' (Eq. 1 from the mesh).")
+      .staticmethod("spheroid")
+      .def("cylinder", &makeCylinder,
+           (bp::arg("radius"), bp::arg("length"), bp::arg("nodes"), bp::arg("curvature") = "exact"),
+           "Closed cylinder along z with flat caps, about `nodes` nodes (within 3 % from 100 nodes on). curvature: 'exact'\n"
+           "(mean curvature 1/(2 radius) on the hull, flat caps) or 'computed' (Eq. 1 from the mesh).")
+      .staticmethod("cylinder")
+      .def("_blended_shape", &makeBlendedShape,
+           "Mesh._blended_shape(blend, primitives, nodes, volume) -> (mesh, scale); see Mesh.reference_shape.")
+      .staticmethod("_blended_shape")
       .def("_restore", &restoreMesh,
-           "Mesh._restore(vertices, triangles, radii, centroid, orientation): a mesh already in its principal\n"
-           "frame, as pickled or saved with a scene, rebuilt without moving it.")
+           (bp::arg("vertices"), bp::arg("triangles"), bp::arg("radii"), bp::arg("centroid"), bp::arg("orientation"),
+            bp::arg("curvatures") = bp::object(), bp::arg("mode") = "prescribed", bp::arg("max_radius") = bp::object()),
+           "A mesh already in its principal frame, as pickled or saved with a scene, rebuilt without moving it.")
       .staticmethod("_restore")
       .add_property("vertices", +[](const BodyMesh& m) { return toArray(m.shape().vertices()); },
                     "(n, 3) vertex positions in the principal frame [m]")
       .add_property("triangles", +[](const BodyMesh& m) { return toArray(m.shape().triangles()); },
                     "(m, 3) vertex indices of each triangle, counter-clockwise seen from outside")
       .add_property("radii", +[](const BodyMesh& m) { return toArray(m.shape().radii()); },
-                    "(m,) radius of curvature of each triangle [m]; never below the triangle's circumradius")
+                    "(m,) radius of curvature each triangle uses in contact [m]: 1/curvature, max_radius for flat\n"
+                    "and concave triangles, never below the triangle's circumradius")
+      .add_property("curvatures", +[](const BodyMesh& m) { return toArray(m.curvature().meanCurvatures); },
+                    "(m,) signed mean curvature of each triangle [1/m]: computed (Eq. 1) or prescribed; < 0 concave")
+      .add_property("node_curvatures", +[](const BodyMesh& m) { return toArray(meanCurvature(bodySurface(m)).nodes); },
+                    "(n,) signed mean curvature at each node computed from the mesh (Eq. 1) [1/m], whatever the mode")
+      .add_property("curvature_mode", &curvatureMode, "'computed' (Eq. 1 from the mesh) or 'prescribed'")
+      .add_property("max_radius", +[](const BodyMesh& m) { return m.curvature().maxRadius; },
+                    "radius flat and concave triangles use in contact [m]")
+      .add_property("distortion", +[](const BodyMesh& m) { return distortion(bodySurface(m)); },
+                    "D = std(triangle area) / mean(triangle area) (Eq. 26)")
       .add_property("normals", +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::normal)); },
                     "(m, 3) outward unit normal of each triangle")
       .add_property("areas", +[](const BodyMesh& m) { return toArray(areas(m)); }, "(m,) triangle areas [m^2]")

@@ -77,7 +77,8 @@ def _mesh_record(mesh):
     return json.dumps({
         "vertices": _encode(mesh.vertices, "<f8"), "triangles": _encode(mesh.triangles, "<i8"),
         "radii": _encode(mesh.radii, "<f8"), "centroid": list(mesh.centroid),
-        "orientation": [w, x, y, z]}, sort_keys=True)
+        "orientation": [w, x, y, z], "curvatures": _encode(mesh.curvatures, "<f8"),
+        "curvature_mode": mesh.curvature_mode, "max_radius": mesh.max_radius}, sort_keys=True)
 
 
 def _store_mesh(mesh):
@@ -98,8 +99,11 @@ def _load_mesh(key):
     if mesh is None:
         r = json.loads(_tag("mesh." + key))
         w, x, y, z = r["orientation"]
+        # Scenes saved before curvatures were kept lack the last three fields; _restore then uses 1/radii.
+        curvatures = _decode(r["curvatures"], "<f8") if "curvatures" in r else None
         mesh = Mesh._restore(_decode(r["vertices"], "<f8", 3), _decode(r["triangles"], "<i8", 3),
-                             _decode(r["radii"], "<f8"), Vector3(*r["centroid"]), Quaternion(w, x, y, z))
+                             _decode(r["radii"], "<f8"), Vector3(*r["centroid"]), Quaternion(w, x, y, z),
+                             curvatures, r.get("curvature_mode", "prescribed"), r.get("max_radius"))
         _meshes[key] = mesh
         _keys[mesh] = key
     return mesh

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pkg/shape/BodyMesh.hpp"
+#include "pkg/shape/Cylinder.hpp"
 #include "pkg/shape/Icosphere.hpp"
 
 namespace roundedmesh {
@@ -86,7 +87,7 @@ TEST(MassProperties, AreTheSameFarFromTheOrigin) {
 
 TEST(BodyMesh, AMeshGivenFarAwayRestoresFromItsPrincipalFrame) {
   const BodyMesh body(icosphere(0.025, 3).transformed(Matrix3r::Identity(), Vector3r(3, 100, -40)));
-  const BodyMesh restored(body.shape(), body.inputCentroid(), body.inputOrientation());
+  const BodyMesh restored(body.shape(), body.inputCentroid(), body.inputOrientation(), body.curvature());
   EXPECT_TRUE(restored.principalMoments().isApprox(body.principalMoments(), 1e-9));
 }
 
@@ -116,12 +117,44 @@ TEST(BodyMesh, KeepsAnAxisAlignedMeshUnrotated) {
 
 TEST(BodyMesh, RestoresAPrincipalFrameMeshWithoutMovingIt) {
   const BodyMesh body(icosphere(1.0, 2).transformed(Matrix3r::Identity(), Vector3r(1, 2, 3)));
-  const BodyMesh restored(body.shape(), body.inputCentroid(), body.inputOrientation());
+  const BodyMesh restored(body.shape(), body.inputCentroid(), body.inputOrientation(), body.curvature());
   for (size_t i = 0; i < body.shape().vertices().size(); ++i)
     EXPECT_EQ(restored.shape().vertices()[i], body.shape().vertices()[i]);
+  const SurfaceCurvature unit{std::vector<Real>(80, 1.0), CurvatureSource::Prescribed, 100.0};
   EXPECT_THROW(BodyMesh(icosphere(1.0, 1).transformed(Matrix3r::Identity(), Vector3r(1, 0, 0)), Vector3r::Zero(),
-                        Quaternionr::Identity()),
+                        Quaternionr::Identity(), unit),
                std::invalid_argument);
+}
+
+// From a bare surface: curvature computed by Eq. 1 unless prescribed. Flat regions (a cylinder's cap away
+// from the rim, where Eq. 1 gives exactly 0) get the cap radius, 100 volume-equivalent radii by default;
+// the input-frame surface is the one given.
+TEST(BodyMesh, TakesItsRadiiFromTheCurvature) {
+  const TriangleSurface cylinder = cylinderSurface(1.0, 2.0, 400);
+  const BodyMesh computed(cylinder, std::nullopt);
+  EXPECT_EQ(computed.curvature().source, CurvatureSource::Computed);
+  const Real cap = 100 * std::cbrt(3 * computed.volume() / (4 * M_PI));
+  EXPECT_NEAR(computed.curvature().maxRadius, cap, 1e-12);
+  int flat = 0;
+  for (int t = 0; t < computed.shape().triangleCount(); ++t) {
+    const Triangle& corners = cylinder.triangles[t];
+    bool inner = true;
+    for (int c : corners) inner = inner && std::abs(cylinder.vertices[c].z()) == 1.0 && cylinder.vertices[c].head<2>().norm() < 0.99;
+    if (!inner) continue;
+    ++flat;
+    EXPECT_EQ(computed.shape().radii()[t], cap);
+  }
+  EXPECT_GT(flat, 50);
+
+  TriangleSurface cube{cuboid(1, 1, 1).vertices(), cuboid(1, 1, 1).triangles()};
+  for (Vector3r& v : cube.vertices) v += Vector3r(2, 0, 0);
+  const BodyMesh prescribed(cube, std::vector<Real>(12, 0.25), 7.0);
+  EXPECT_EQ(prescribed.curvature().source, CurvatureSource::Prescribed);
+  EXPECT_EQ(prescribed.curvature().maxRadius, 7.0);
+  for (Real r : prescribed.shape().radii()) EXPECT_NEAR(r, 4.0, 1e-12);
+  const TriangleSurface back = prescribed.inputFrameSurface();
+  for (std::size_t i = 0; i < cube.vertices.size(); ++i) EXPECT_TRUE(back.vertices[i].isApprox(cube.vertices[i], 1e-14));
+  EXPECT_THROW(BodyMesh(cube, std::vector<Real>(11, 1.0)), std::invalid_argument);
 }
 
 TEST(BodyMesh, RejectsAMeshWithoutVolume) {

@@ -6,7 +6,7 @@ from yade import O
 from yade.minieigenHP import Quaternion, Vector3
 
 import roundedmesh as rm
-from roundedmesh.export import VtkSeries, write_vtp
+from roundedmesh.export import VtkSeries, write_mesh_vtp, write_vtp
 
 RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000)
 
@@ -29,7 +29,18 @@ def test_vtp_holds_every_body_in_global_coordinates(tmp_path):
     np.testing.assert_allclose(points[42:], expected, atol=1e-14)
     np.testing.assert_array_equal(np.unique(arrays["body_id"]), [0, 1])
     np.testing.assert_allclose(arrays["radius"], 0.5)
+    np.testing.assert_allclose(arrays["curvature"], 2.0)
     assert arrays["connectivity"].max() == 2 * 42 - 1
+
+
+def test_a_mesh_alone_with_its_curvature(tmp_path):
+    mesh = rm.Mesh.reference_shape("gummy_bear")
+    piece, arrays = read_piece(write_mesh_vtp(mesh, str(tmp_path / "bear.vtp")))
+    np.testing.assert_array_equal(arrays["Points"].reshape(-1, 3), mesh.vertices)
+    np.testing.assert_array_equal(arrays["connectivity"].reshape(-1, 3), mesh.triangles)
+    np.testing.assert_array_equal(arrays["curvature"], mesh.curvatures)
+    np.testing.assert_array_equal(arrays["node_curvature"], mesh.node_curvatures)
+    assert piece.find("PointData") is not None
 
 
 def test_series_indexes_frames_by_time(tmp_path):

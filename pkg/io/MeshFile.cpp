@@ -1,0 +1,76 @@
+#include "pkg/io/MeshFile.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+#include "pkg/shape/SurfaceRepair.hpp"
+
+namespace roundedmesh {
+namespace {
+
+using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+constexpr std::array<const char*, 4> kFormats = {"obj", "stl", "off", "ply"};
+
+std::string format(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  if (!extension.empty()) extension.erase(0, 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (std::find(kFormats.begin(), kFormats.end(), extension) == kFormats.end())
+    throw std::invalid_argument(path + ": unknown mesh format '" + extension + "'; use .obj, .stl, .off or .ply");
+  return extension;
+}
+
+}  // namespace
+
+TriangleSurface readMeshFile(const std::string& path, Real scale) {
+  if (!(std::isfinite(scale) && scale > 0))
+    throw std::invalid_argument("scale must be positive and finite, got " + std::to_string(scale));
+  const std::string kind = format(path);
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) throw FileNotFound(path + ": no such file");
+  if (std::filesystem::file_size(path, error) == 0) throw std::invalid_argument(path + ": the file is empty");
+
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  // CGAL's extension dispatch is case-sensitive; the format was already recognised above.
+  std::ifstream in(path, std::ios::binary);
+  bool read = false;
+  if (kind == "obj") read = CGAL::IO::read_OBJ(in, points, polygons);
+  else if (kind == "off") read = CGAL::IO::read_OFF(in, points, polygons);
+  else if (kind == "ply") read = CGAL::IO::read_PLY(in, points, polygons, CGAL::parameters::verbose(false));
+  else read = CGAL::IO::read_STL(in, points, polygons, CGAL::parameters::verbose(false));
+  if (!read)
+    throw std::invalid_argument(path + ": cannot be read as " + kind +
+                                " (truncated, corrupt, or not a mesh file of that format)");
+
+  PolygonSoup soup;
+  soup.points.reserve(points.size());
+  for (const Point& p : points) soup.points.emplace_back(scale * p.x(), scale * p.y(), scale * p.z());
+  soup.polygons = std::move(polygons);
+  try {
+    return repairedSurface(soup);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(path + ": " + e.what());
+  }
+}
+
+void writeMeshFile(const std::string& path, const TriangleSurface& surface) {
+  format(path);
+  std::vector<Point> points;
+  points.reserve(surface.vertices.size());
+  for (const Vector3r& v : surface.vertices) points.emplace_back(v.x(), v.y(), v.z());
+  std::vector<std::vector<std::size_t>> polygons;
+  polygons.reserve(surface.triangles.size());
+  for (const Triangle& t : surface.triangles) polygons.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
+  if (!CGAL::IO::write_polygon_soup(path, points, polygons, CGAL::parameters::stream_precision(17)))
+    throw std::invalid_argument(path + ": cannot be written");
+}
+
+}  // namespace roundedmesh

@@ -1,0 +1,21 @@
+// Spheroid x^2/b^2 + y^2/b^2 + z^2/a^2 = 1: semi-axis a along z, b across (scene S5), meshed with about
+// the requested number of nodes (ImplicitSurfaceMesher.hpp), and its exact mean curvature, for
+// prescribing the smooth shape's curvature instead of computing it from the mesh. Lengths in m.
+#pragma once
+
+#include <vector>
+
+#include "pkg/shape/TriangleSurface.hpp"
+
+namespace roundedmesh {
+
+TriangleSurface spheroidSurface(Real a, Real b, int nodes);
+
+// Mean curvature of the spheroid at its surface point x [1/m], from the ellipsoid formula
+//   H = (a^2 + 2 b^2 - |x|^2) / (2 a^2 b^4 q^(3/2)),  q = (x^2 + y^2)/b^4 + z^2/a^4.
+Real spheroidMeanCurvature(Real a, Real b, const Vector3r& x);
+
+// Per triangle: H at the point of the spheroid nearest the triangle's centroid.
+std::vector<Real> spheroidTriangleCurvatures(Real a, Real b, const TriangleSurface& surface);
+
+}  // namespace roundedmesh

@@ -1,0 +1,196 @@
+#include "pkg/shape/SurfaceRepair.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "pkg/shape/MassProperties.hpp"
+#include "pkg/shape/MeshTopology.hpp"
+
+namespace roundedmesh {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+// Names vertices in messages by their index in the input and their coordinates.
+class VertexNames {
+ public:
+  VertexNames(const std::vector<Vector3r>& points, std::vector<std::size_t> inputIndex)
+      : points_(points), inputIndex_(std::move(inputIndex)) {}
+  std::string operator()(std::size_t v) const {
+    std::ostringstream s;
+    const Vector3r& x = points_[v];
+    s << "vertex " << inputIndex_[v] << " (" << x.x() << ", " << x.y() << ", " << x.z() << ")";
+    return s.str();
+  }
+
+ private:
+  const std::vector<Vector3r>& points_;
+  std::vector<std::size_t> inputIndex_;
+};
+
+[[noreturn]] void reject(int count, const std::string& singular, const std::string& plural,
+                         const std::string& where) {
+  throw std::invalid_argument(std::to_string(count) + " " + (count == 1 ? singular : plural) + ", first " + where);
+}
+
+void requireFinite(const std::vector<Vector3r>& points) {
+  int count = 0;
+  std::size_t first = 0;
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if (!points[v].allFinite() && count++ == 0) first = v;
+  if (count > 0) {
+    std::vector<std::size_t> identity(points.size());
+    for (std::size_t v = 0; v < identity.size(); ++v) identity[v] = v;
+    reject(count, "vertex with a non-finite coordinate", "vertices with non-finite coordinates",
+           VertexNames(points, identity)(first));
+  }
+}
+
+void requireValidCorners(const PolygonSoup& soup) {
+  for (std::size_t p = 0; p < soup.polygons.size(); ++p) {
+    const auto& polygon = soup.polygons[p];
+    if (polygon.size() < 3)
+      throw std::invalid_argument("face " + std::to_string(p) + " has " + std::to_string(polygon.size()) +
+                                  " corners; a face needs at least 3");
+    for (std::size_t corner : polygon)
+      if (corner >= soup.points.size())
+        throw std::invalid_argument("face " + std::to_string(p) + " refers to vertex " + std::to_string(corner) +
+                                    ", but there are " + std::to_string(soup.points.size()) + " vertices");
+  }
+}
+
+// Welds vertices with identical coordinates and drops unused ones, keeping the input's order. Returns the
+// surviving points, the input index of each, and the polygons renumbered.
+struct Welded {
+  std::vector<Vector3r> points;
+  std::vector<std::size_t> inputIndex;
+  std::vector<std::vector<std::size_t>> polygons;
+};
+
+Welded weld(const PolygonSoup& soup) {
+  std::vector<bool> used(soup.points.size(), false);
+  for (const auto& polygon : soup.polygons)
+    for (std::size_t corner : polygon) used[corner] = true;
+  std::map<std::array<Real, 3>, std::size_t> byPosition;
+  std::vector<std::size_t> renumbered(soup.points.size());
+  Welded w;
+  for (std::size_t v = 0; v < soup.points.size(); ++v) {
+    if (!used[v]) continue;
+    const Vector3r& x = soup.points[v];
+    const auto [it, inserted] = byPosition.emplace(std::array<Real, 3>{x.x(), x.y(), x.z()}, w.points.size());
+    if (inserted) {
+      w.points.push_back(x);
+      w.inputIndex.push_back(v);
+    }
+    renumbered[v] = it->second;
+  }
+  for (const auto& polygon : soup.polygons) {
+    std::vector<std::size_t> corners;
+    for (std::size_t corner : polygon) corners.push_back(renumbered[corner]);
+    w.polygons.push_back(std::move(corners));
+  }
+  return w;
+}
+
+// Triangulates a face of more than three corners with CGAL's hole filling, which finds the triangulation
+// of the closed polyline with the least area (also for non-planar and non-convex faces).
+void triangulate(const std::vector<std::size_t>& face, const std::vector<Vector3r>& points,
+                 std::vector<Triangle>& out) {
+  if (face.size() == 3) {
+    out.push_back({static_cast<int>(face[0]), static_cast<int>(face[1]), static_cast<int>(face[2])});
+    return;
+  }
+  std::vector<Kernel::Point_3> polyline;
+  for (std::size_t corner : face) polyline.emplace_back(points[corner].x(), points[corner].y(), points[corner].z());
+  std::vector<CGAL::Triple<int, int, int>> patch;
+  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(polyline, std::back_inserter(patch));
+  for (const auto& t : patch)
+    out.push_back({static_cast<int>(face[t.first]), static_cast<int>(face[t.second]), static_cast<int>(face[t.third])});
+}
+
+void requireNonDegenerate(const TriangleSurface& s, const VertexNames& name) {
+  int count = 0;
+  std::size_t first = 0;
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    const Vector3r &a = s.vertices[s.triangles[t][0]], &b = s.vertices[s.triangles[t][1]],
+                   &c = s.vertices[s.triangles[t][2]];
+    const Real longestEdgeSq = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+    // Relative to the longest edge: round-off of any sensible triangle is far above 1e-12.
+    if (!((b - a).cross(c - a).norm() > 1e-12 * longestEdgeSq) && count++ == 0) first = t;
+  }
+  if (count > 0) {
+    const Triangle& t = s.triangles[first];
+    reject(count, "degenerate (zero-area) triangle", "degenerate (zero-area) triangles",
+           "triangle " + std::to_string(first) + " at " + name(t[0]) + ", " + name(t[1]) + ", " + name(t[2]));
+  }
+}
+
+void requireClosedManifoldOriented(const TriangleSurface& s, const VertexNames& name) {
+  const EdgeDefects defects = findEdgeDefects(s.triangles);
+  auto at = [&](const EdgeDefect& d) { return "at the edge from " + name(d.first[0]) + " to " + name(d.first[1]); };
+  if (defects.boundary.count)
+    reject(defects.boundary.count, "boundary edge (the surface is not closed)",
+           "boundary edges (the surface is not closed)", at(defects.boundary));
+  if (defects.nonManifold.count)
+    reject(defects.nonManifold.count, "non-manifold edge (bordering more than two triangles)",
+           "non-manifold edges (bordering more than two triangles)", at(defects.nonManifold));
+  if (defects.misoriented.count)
+    reject(defects.misoriented.count,
+           "edge between triangles of opposite orientation (the surface is not consistently oriented)",
+           "edges between triangles of opposite orientation (the surface is not consistently oriented)",
+           at(defects.misoriented));
+}
+
+Real enclosedVolume(const TriangleSurface& s) {
+  Eigen::AlignedBox<Real, 3> box;
+  for (const Vector3r& v : s.vertices) box.extend(v);
+  const Real volume = massProperties(s.vertices, s.triangles).volume;
+  // A closed surface folded flat encloses nothing; round-off alone stays far below 1e-9 of its box.
+  if (!(std::abs(volume) > 1e-9 * box.volume()))
+    throw std::invalid_argument("the surface encloses no volume (" + std::to_string(volume) +
+                                " m^3): it is flat or folded onto itself");
+  return volume;
+}
+
+void checkSurface(const TriangleSurface& s, const VertexNames& name) {
+  requireNonDegenerate(s, name);
+  requireClosedManifoldOriented(s, name);
+}
+
+}  // namespace
+
+TriangleSurface repairedSurface(const PolygonSoup& soup) {
+  if (soup.points.empty() || soup.polygons.empty())
+    throw std::invalid_argument("the mesh is empty (" + std::to_string(soup.points.size()) + " vertices, " +
+                                std::to_string(soup.polygons.size()) + " faces)");
+  requireFinite(soup.points);
+  requireValidCorners(soup);
+  Welded welded = weld(soup);
+  TriangleSurface s;
+  for (const auto& face : welded.polygons) triangulate(face, welded.points, s.triangles);
+  s.vertices = std::move(welded.points);
+  const VertexNames name(s.vertices, std::move(welded.inputIndex));
+  checkSurface(s, name);
+  if (enclosedVolume(s) < 0)
+    for (Triangle& t : s.triangles) std::swap(t[1], t[2]);
+  return s;
+}
+
+void requireValidSurface(const TriangleSurface& surface) {
+  requireFinite(surface.vertices);
+  std::vector<std::size_t> identity(surface.vertices.size());
+  for (std::size_t v = 0; v < identity.size(); ++v) identity[v] = v;
+  checkSurface(surface, VertexNames(surface.vertices, identity));
+  if (enclosedVolume(surface) < 0)
+    throw std::invalid_argument("the surface is inside-out: its triangles must run counter-clockwise seen from "
+                                "outside");
+}
+
+}  // namespace roundedmesh

@@ -1,0 +1,31 @@
+// Turns polygons as read from a file or given as arrays into a surface that can bound a rigid body, or
+// says exactly what is wrong and where.
+// Repaired silently, because the repair cannot change the shape: exact duplicate vertices are welded (STL
+// stores every triangle's corners separately), vertices no polygon uses are dropped, polygons with more
+// than three corners are triangulated (CGAL), and a surface that is entirely inside-out is reversed.
+// Rejected, with std::invalid_argument naming the defect, how often it occurs and where it first occurs
+// (vertex index in the input and coordinates): non-finite coordinates, corner indices out of range,
+// polygons with fewer than three corners, degenerate (zero-area) triangles, boundary edges (not closed),
+// edges bordering more than two triangles (not edge-manifold), neighbouring triangles of opposite
+// orientation, and a surface that encloses no volume.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "pkg/shape/TriangleSurface.hpp"
+
+namespace roundedmesh {
+
+struct PolygonSoup {
+  std::vector<Vector3r> points;                    // [m]
+  std::vector<std::vector<std::size_t>> polygons;  // corner indices into points
+};
+
+TriangleSurface repairedSurface(const PolygonSoup& soup);
+
+// The checks of repairedSurface on a surface that must already be valid and outward: throws the same
+// errors, repairs nothing. Vertex indices in messages are the surface's own.
+void requireValidSurface(const TriangleSurface& surface);
+
+}  // namespace roundedmesh

@@ -1,0 +1,111 @@
+// repairedSurface: what it repairs silently (welding, quads, inside-out) and what it refuses, with the
+// defect and its place in the message. The Python suite checks the same on broken files.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "pkg/shape/Icosphere.hpp"
+#include "pkg/shape/MassProperties.hpp"
+#include "pkg/shape/SurfaceRepair.hpp"
+
+namespace roundedmesh {
+namespace {
+
+PolygonSoup soupOf(const TriangleSurface& s) {
+  PolygonSoup soup{s.vertices, {}};
+  for (const Triangle& t : s.triangles) soup.polygons.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
+  return soup;
+}
+
+std::string messageOf(const PolygonSoup& soup) {
+  try {
+    repairedSurface(soup);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A unit cube as six quads, counter-clockwise seen from outside.
+PolygonSoup cube() {
+  return {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+          {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
+}
+
+TEST(SurfaceRepair, TriangulatesQuads) {
+  const TriangleSurface s = repairedSurface(cube());
+  EXPECT_EQ(s.triangles.size(), 12u);
+  EXPECT_NEAR(massProperties(s.vertices, s.triangles).volume, 1.0, 1e-14);
+}
+
+TEST(SurfaceRepair, WeldsDuplicateVerticesAndDropsUnusedOnes) {
+  // Every triangle with its own three corners, as STL stores them, plus one stray point.
+  const TriangleSurface sphere = icosphereSurface(1.0, 1);
+  PolygonSoup soup;
+  for (const Triangle& t : sphere.triangles) {
+    soup.polygons.push_back({soup.points.size(), soup.points.size() + 1, soup.points.size() + 2});
+    for (int corner : t) soup.points.push_back(sphere.vertices[corner]);
+  }
+  soup.points.emplace_back(9, 9, 9);
+  const TriangleSurface s = repairedSurface(soup);
+  EXPECT_EQ(s.vertices.size(), sphere.vertices.size());
+  EXPECT_EQ(s.triangles.size(), sphere.triangles.size());
+}
+
+TEST(SurfaceRepair, ReversesAnInsideOutSurface) {
+  TriangleSurface inverted = icosphereSurface(1.0, 1);
+  for (Triangle& t : inverted.triangles) std::swap(t[1], t[2]);
+  const TriangleSurface s = repairedSurface(soupOf(inverted));
+  EXPECT_GT(massProperties(s.vertices, s.triangles).volume, 0);
+}
+
+TEST(SurfaceRepair, NamesEachDefect) {
+  const TriangleSurface sphere = icosphereSurface(1.0, 1);
+  auto expectMessage = [](const PolygonSoup& soup, const std::string& text) {
+    const std::string message = messageOf(soup);
+    EXPECT_NE(message.find(text), std::string::npos) << "expected '" << text << "' in: " << message;
+  };
+  PolygonSoup open = soupOf(sphere);
+  open.polygons.pop_back();
+  expectMessage(open, "3 boundary edges (the surface is not closed), first at the edge from vertex");
+
+  PolygonSoup flipped = soupOf(sphere);
+  std::swap(flipped.polygons[4][1], flipped.polygons[4][2]);
+  expectMessage(flipped, "3 edges between triangles of opposite orientation");
+
+  PolygonSoup doubled = soupOf(sphere);
+  doubled.polygons.push_back(doubled.polygons.front());
+  expectMessage(doubled, "non-manifold edges");
+
+  PolygonSoup notFinite = soupOf(sphere);
+  notFinite.points[5].y() = NAN;
+  expectMessage(notFinite, "1 vertex with a non-finite coordinate, first vertex 5 (");
+
+  PolygonSoup flat{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 1}}};
+  expectMessage(flat, "encloses no volume");
+
+  PolygonSoup outOfRange = soupOf(sphere);
+  outOfRange.polygons[3][1] = 999;
+  expectMessage(outOfRange, "face 3 refers to vertex 999");
+
+  expectMessage(PolygonSoup{}, "the mesh is empty");
+}
+
+// A closed surface with one zero-area triangle: edge 0-1 of a tetrahedron split at its midpoint 4, the
+// triangle (0, 1, 4) closing the seam.
+TEST(SurfaceRepair, NamesADegenerateTriangle) {
+  const PolygonSoup soup{{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}, {1, 0, 0}},
+                         {{0, 2, 4}, {4, 2, 1}, {0, 4, 3}, {4, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
+  EXPECT_EQ(messageOf(soup), "");  // the valid split tetrahedron
+  PolygonSoup degenerate = soup;
+  degenerate.polygons[2] = {0, 1, 3};   // the face 0-1-3 unsplit ...
+  degenerate.polygons[3] = {1, 4, 0};   // ... and the sliver 1-4-0 on the other side of the seam
+  const std::string message = messageOf(degenerate);
+  EXPECT_NE(message.find("1 degenerate (zero-area) triangle, first triangle 3 at vertex 1 (2, 0, 0), vertex 4 (1, 0, 0), "
+                         "vertex 0 (0, 0, 0)"),
+            std::string::npos)
+      << message;
+}
+
+}  // namespace
+}  // namespace roundedmesh

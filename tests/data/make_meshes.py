@@ -1,0 +1,126 @@
+"""Writes the small mesh files of tests/data: one good shape in every supported format, and one broken
+file per defect class that Mesh.load must repair or name. Written with numpy alone, independently of CGAL
+(the reader under test). Run from anywhere: /usr/bin/python3 tests/data/make_meshes.py
+
+The good shape is an octahedron with semi-axes 1.5, 1 and 0.75 along x, y, z: coordinates exact in binary
+and decimal, so that every format (STL keeps single precision) stores exactly the same numbers."""
+import os
+import struct
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+VERTICES = np.array([[1.5, 0, 0], [-1.5, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 0.75], [0, 0, -0.75]])
+# Counter-clockwise seen from outside.
+TRIANGLES = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+
+
+def path(name):
+    return os.path.join(HERE, name)
+
+
+def number(x):
+    return repr(float(x))
+
+
+def write_obj(name, vertices, faces, comment="octahedron"):
+    with open(path(name), "w") as f:
+        f.write(f"# {comment}\n")
+        f.writelines(f"v {' '.join(number(c) for c in v)}\n" for v in vertices)
+        f.writelines(f"f {' '.join(str(i + 1) for i in face)}\n" for face in faces)
+
+
+def write_off(name, vertices, faces):
+    with open(path(name), "w") as f:
+        f.write(f"OFF\n{len(vertices)} {len(faces)} 0\n")
+        f.writelines(f"{' '.join(number(c) for c in v)}\n" for v in vertices)
+        f.writelines(f"{len(face)} {' '.join(str(i) for i in face)}\n" for face in faces)
+
+
+def normal(vertices, face):
+    a, b, c = (np.asarray(vertices[i], float) for i in face)
+    n = np.cross(b - a, c - a)
+    return n / np.linalg.norm(n)
+
+
+def write_ascii_stl(name, vertices, faces):
+    with open(path(name), "w") as f:
+        f.write("solid octahedron\n")
+        for face in faces:
+            f.write(f"  facet normal {' '.join(number(c) for c in normal(vertices, face))}\n    outer loop\n")
+            f.writelines(f"      vertex {' '.join(number(c) for c in vertices[i])}\n" for i in face)
+            f.write("    endloop\n  endfacet\n")
+        f.write("endsolid octahedron\n")
+
+
+def binary_stl(vertices, faces, declared=None):
+    data = bytearray(b"binary STL written by tests/data/make_meshes.py".ljust(80, b" "))
+    data += struct.pack("<I", len(faces) if declared is None else declared)
+    for face in faces:
+        data += struct.pack("<3f", *normal(vertices, face))
+        for i in face:
+            data += struct.pack("<3f", *vertices[i])
+        data += struct.pack("<H", 0)
+    return bytes(data)
+
+
+def write_ply(name, vertices, faces, binary):
+    header = ["ply", "format binary_little_endian 1.0" if binary else "format ascii 1.0",
+              f"element vertex {len(vertices)}", "property double x", "property double y", "property double z",
+              f"element face {len(faces)}", "property list uchar int vertex_indices", "end_header"]
+    with open(path(name), "wb") as f:
+        f.write(("\n".join(header) + "\n").encode())
+        if binary:
+            for v in vertices:
+                f.write(struct.pack("<3d", *v))
+            for face in faces:
+                f.write(struct.pack("<B", len(face)) + struct.pack(f"<{len(face)}i", *face))
+        else:
+            f.writelines(f"{' '.join(number(c) for c in v)}\n".encode() for v in vertices)
+            f.writelines(f"{len(face)} {' '.join(str(i) for i in face)}\n".encode() for face in faces)
+
+
+def main():
+    # Good: the same octahedron in every format.
+    write_obj("octahedron.obj", VERTICES, TRIANGLES)
+    write_off("octahedron.off", VERTICES, TRIANGLES)
+    write_ascii_stl("octahedron_ascii.stl", VERTICES, TRIANGLES)
+    with open(path("octahedron_binary.stl"), "wb") as f:
+        f.write(binary_stl(VERTICES, TRIANGLES))
+    write_ply("octahedron_ascii.ply", VERTICES, TRIANGLES, binary=False)
+    write_ply("octahedron_binary.ply", VERTICES, TRIANGLES, binary=True)
+
+    # Repaired silently.
+    each_own = np.array([VERTICES[i] for face in TRIANGLES for i in face])
+    write_obj("duplicate_vertices.obj", each_own, np.arange(len(each_own)).reshape(-1, 3),
+              "octahedron, every triangle with its own three vertices (unwelded)")
+    write_ascii_stl("inside_out.stl", VERTICES, TRIANGLES[:, ::-1])
+    cube = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], float)
+    write_obj("cube_quads.obj", cube, [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6],
+                                       [3, 0, 4, 7]], "unit cube as six quads")
+
+    # Refused, each with the defect named.
+    write_obj("open.obj", VERTICES, TRIANGLES[1:], "octahedron with one face missing")
+    flipped = TRIANGLES.copy()
+    flipped[2] = flipped[2][::-1]
+    write_obj("inconsistent.obj", VERTICES, flipped, "octahedron with face 2 reversed")
+    unit = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], float)
+    mirrored = [1, 1, 0] - unit  # a second octahedron sharing the edge from (1, 0, 0) to (0, 1, 0)
+    faces = np.vstack([TRIANGLES, TRIANGLES[:, ::-1] + 6])  # mirroring reverses orientation
+    write_off("nonmanifold_edge.off", np.vstack([unit, mirrored]), faces)
+    write_off("degenerate.off", [[0, 0, 0], [2, 0, 0], [0, 2, 0], [0, 0, 2], [1, 0, 0]],
+              [[0, 2, 4], [4, 2, 1], [0, 1, 3], [1, 4, 0], [0, 3, 2], [1, 2, 3]])
+    write_obj("flat.obj", [[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2], [0, 2, 1]],
+              "two triangles back to back: closed, but no volume")
+    broken = VERTICES.copy()
+    broken[3, 1] = np.nan
+    write_ply("nan.ply", broken, TRIANGLES, binary=True)
+    open(path("empty.stl"), "wb").close()
+    with open(path("truncated.stl"), "wb") as f:
+        f.write(binary_stl(VERTICES, TRIANGLES)[:84 + 3 * 50 + 20])
+    with open(path("not_a_mesh.off"), "w") as f:
+        f.write("This is a text file, not a mesh.\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,116 @@
+"""Mesh.load and Mesh.save: every supported format reads to the same mesh, repairable defects are repaired,
+and every other defect raises an error naming the file, the defect and where it is. The files are in
+tests/data, written by tests/data/make_meshes.py."""
+import math
+import os
+
+import numpy as np
+import pytest
+
+import roundedmesh as rm
+
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "data")
+GOOD = ["octahedron.obj", "octahedron.off", "octahedron_ascii.stl", "octahedron_binary.stl",
+        "octahedron_ascii.ply", "octahedron_binary.ply"]
+
+
+def data(name):
+    return os.path.join(DATA, name)
+
+
+def input_frame(mesh):
+    """Vertices in the frame the mesh was given in, sorted, so that meshes compare whatever the order."""
+    rotation = np.array(mesh.orientation.toRotationMatrix())
+    points = mesh.vertices @ rotation.T + np.array(mesh.centroid)
+    return points[np.lexsort(points.T[::-1])]
+
+
+# The octahedron with semi-axes 1.5, 1, 0.75: volume (4/3) a b c, exactly, since it is a polyhedron.
+@pytest.mark.parametrize("name", GOOD)
+def test_every_format_loads_the_same_octahedron(name):
+    mesh = rm.Mesh.load(data(name))
+    reference = rm.Mesh.load(data("octahedron.obj"))
+    assert mesh.triangles.shape == (8, 3)
+    assert mesh.volume == pytest.approx(4 / 3 * 1.5 * 1 * 0.75, rel=1e-14)
+    np.testing.assert_allclose(input_frame(mesh), input_frame(reference), atol=1e-15)
+
+
+def test_scale_converts_units():
+    millimetres = rm.Mesh.load(data("octahedron.obj"), scale=0.001)
+    assert millimetres.volume == pytest.approx(1.5 * 0.75 * 4 / 3 * 1e-9, rel=1e-14)
+    with pytest.raises(ValueError, match="scale must be positive"):
+        rm.Mesh.load(data("octahedron.obj"), scale=-1.0)
+
+
+@pytest.mark.parametrize("name", ["duplicate_vertices.obj", "inside_out.stl"])
+def test_repairable_defects_are_repaired(name):
+    mesh = rm.Mesh.load(data(name))
+    np.testing.assert_allclose(input_frame(mesh), input_frame(rm.Mesh.load(data("octahedron.obj"))), atol=1e-15)
+    assert mesh.volume == pytest.approx(1.5, rel=1e-14)
+    # Outward: each normal points away from the centre (the octahedron is convex).
+    centres = mesh.vertices[mesh.triangles].mean(axis=1)
+    assert np.all(np.einsum("ij,ij->i", mesh.normals, centres) > 0)
+
+
+def test_quads_are_triangulated():
+    cube = rm.Mesh.load(data("cube_quads.obj"))
+    assert cube.triangles.shape == (12, 3)
+    assert cube.volume == pytest.approx(1.0, rel=1e-14)
+
+
+@pytest.mark.parametrize("name, message", [
+    ("open.obj", r"open\.obj: 3 boundary edges \(the surface is not closed\), first at the edge from vertex \d+ \("),
+    ("inconsistent.obj", r"inconsistent\.obj: 3 edges between triangles of opposite orientation \(the surface is not "
+                         r"consistently oriented\), first at the edge from vertex \d+ \("),
+    ("nonmanifold_edge.off", r"nonmanifold_edge\.off: 1 non-manifold edge \(bordering more than two triangles\), first "
+                             r"at the edge from vertex 0 \(1, 0, 0\) to vertex 2 \(0, 1, 0\)"),
+    ("degenerate.off", r"degenerate\.off: 1 degenerate \(zero-area\) triangle, first triangle 3 at vertex 1 \(2, 0, 0\)"),
+    ("flat.obj", r"flat\.obj: the surface encloses no volume"),
+    ("nan.ply", r"nan\.ply: 1 vertex with a non-finite coordinate, first vertex 3 \(0, nan, 0\)"),
+    ("empty.stl", r"empty\.stl: the file is empty"),
+    ("truncated.stl", r"truncated\.stl: cannot be read as stl \(truncated, corrupt"),
+    ("not_a_mesh.off", r"not_a_mesh\.off: cannot be read as off"),
+])
+def test_defects_are_named_with_the_file_and_the_place(name, message):
+    with pytest.raises(ValueError, match=message):
+        rm.Mesh.load(data(name))
+
+
+def test_missing_files_and_unknown_formats():
+    with pytest.raises(FileNotFoundError, match="nowhere.stl: no such file"):
+        rm.Mesh.load(data("nowhere.stl"))
+    with pytest.raises(ValueError, match=r"shape\.xyz: unknown mesh format 'xyz'; use \.obj, \.stl, \.off or \.ply"):
+        rm.Mesh.load("shape.xyz")
+
+
+# Save writes the repaired surface in the frame it was given in; OBJ, OFF and PLY read back exactly, STL to
+# single precision.
+@pytest.mark.parametrize("extension, tolerance", [("obj", 0), ("off", 0), ("ply", 0), ("stl", 1e-7)])
+def test_save_and_load_round_trip(tmp_path, extension, tolerance):
+    octahedron = rm.Mesh.load(data("octahedron.obj"))
+    quarter_turn = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]])
+    turned = rm.Mesh.from_arrays(octahedron.vertices @ quarter_turn.T + [3, 2, 1], octahedron.triangles)
+    target = tmp_path / f"saved.{extension}"
+    turned.save(str(target))
+    again = rm.Mesh.load(str(target))
+    np.testing.assert_allclose(input_frame(again), input_frame(turned), rtol=tolerance, atol=1e-15)
+    assert again.volume == pytest.approx(turned.volume, rel=4 * tolerance + 1e-14)
+
+
+def test_saving_to_an_unknown_format_or_place_fails():
+    mesh = rm.Mesh.icosphere(1.0, 1)
+    with pytest.raises(ValueError, match="unknown mesh format"):
+        mesh.save("mesh.txt")
+    with pytest.raises(ValueError, match="cannot be written"):
+        mesh.save("/nonexistent-directory/mesh.obj")
+
+
+def test_arrays_go_through_the_same_checks():
+    octahedron = rm.Mesh.load(data("octahedron.obj"))
+    corners = input_frame(octahedron)
+    with pytest.raises(ValueError, match="mesh: 3 boundary edges"):
+        rm.Mesh.from_arrays(octahedron.vertices, octahedron.triangles[1:])
+    inside_out = rm.Mesh.from_arrays(octahedron.vertices, octahedron.triangles[:, ::-1])
+    assert inside_out.volume == pytest.approx(1.5, rel=1e-14)
+    assert corners.shape == (6, 3)
+    assert not math.isnan(inside_out.volume)
