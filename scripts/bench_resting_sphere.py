@@ -6,24 +6,15 @@ figure on a shared machine.
     yade -n -x scripts/bench_resting_sphere.py [--steps 2000] [--repetitions 7]
 """
 import argparse
-import os
-import platform
 import sys
 import time
 
 import numpy as np
-import yade.config
 from yade import O
 
 import roundedmesh as rm
+from roundedmesh.benchmarking import machine
 from roundedmesh.scenes import build_bouncing_sphere
-
-
-def machine():
-    with open("/proc/cpuinfo") as cpuinfo:
-        model = next((line.split(":", 1)[1].strip() for line in cpuinfo if line.startswith("model name")),
-                     platform.processor())
-    return f"{model}, {os.cpu_count()} cores, {platform.system()} {platform.release()}, YADE {yade.config.version}"
 
 
 def main(argv):
