@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <vector>
 
 #include "pkg/shape/SurfaceRepair.hpp"

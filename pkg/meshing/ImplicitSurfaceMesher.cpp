@@ -24,6 +24,8 @@ using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
+constexpr int kMaxGridNodes = 256;  // per axis: 16.7 million values of f, 134 MB
+
 Vector3r toVector(const Point& p) { return {p.x(), p.y(), p.z()}; }
 Point toPoint(const Vector3r& v) { return {v.x(), v.y(), v.z()}; }
 
@@ -33,6 +35,9 @@ Point toPoint(const Vector3r& v) { return {v.x(), v.y(), v.z()}; }
 // addresses.
 Mesh sampleSurface(const ImplicitSolid& solid, Real spacing) {
   const int n = static_cast<int>(std::ceil(2 * solid.boundingRadius / spacing)) + 1;
+  if (n > kMaxGridNodes)
+    throw std::invalid_argument("the sampling grid would need " + std::to_string(n) + " nodes along each axis (at " +
+                                "most " + std::to_string(kMaxGridNodes) + "): ask for fewer nodes");
   const Vector3r origin = solid.inside - Vector3r::Constant(solid.boundingRadius);
   auto index = [n](int i, int j, int k) { return (std::int64_t(i) * n + j) * n + k; };
   auto position = [&](std::int64_t g) {
@@ -139,8 +144,12 @@ Vector3r projectOnSurface(const ImplicitSolid& solid, Vector3r x) {
 }
 
 TriangleSurface meshImplicitSurface(const ImplicitSolid& solid, int nodes) {
-  if (nodes < 12) throw std::invalid_argument("nodes must be at least 12, got " + std::to_string(nodes));
-  const Mesh coarse = sampleSurface(solid, solid.boundingRadius / 20);
+  if (nodes < 12 || nodes > 50000)
+    throw std::invalid_argument("nodes must be between 12 and 50000, got " + std::to_string(nodes));
+  if (!(solid.thickness * 30 > solid.boundingRadius))
+    throw std::invalid_argument("the solid is too thin for the mesher: thickness " + std::to_string(solid.thickness) +
+                                " against a size of " + std::to_string(solid.boundingRadius));
+  const Mesh coarse = sampleSurface(solid, std::min(solid.boundingRadius / 20, solid.thickness / 4));
   const Real area = PMP::area(coarse);
   Real edgeLength = std::sqrt(2 * area / (std::sqrt(3.0) * nodes));
   const Mesh sample = sampleSurface(solid, edgeLength / 2);

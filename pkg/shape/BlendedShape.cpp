@@ -37,14 +37,15 @@ ImplicitSolid implicitSolid(const BlendedShape& shape) {
   if (!(std::isfinite(shape.blend) && shape.blend >= 0))
     throw std::invalid_argument("shape: blend_k must be finite and >= 0, got " + std::to_string(shape.blend));
   const Vector3r inside = shape.primitives.front().a;
-  Real reach = 0;
+  Real reach = 0, thinnest = INFINITY;
   for (const ShapePrimitive& p : shape.primitives) {
     if (!(std::isfinite(p.radius) && p.radius > 0) || !p.a.allFinite() || !p.b.allFinite())
       throw std::invalid_argument("shape: every primitive needs finite points and a positive radius");
     reach = std::max({reach, (p.a - inside).norm() + p.radius, (p.b - inside).norm() + p.radius});
+    thinnest = std::min(thinnest, 2 * p.radius);
   }
   return {[shape](const Vector3r& x) { return blendedDistance(shape, x); }, inside,
-          1.1 * (reach + shape.blend / 4)};
+          1.1 * (reach + shape.blend / 4), thinnest};
 }
 
 TriangleSurface blendedShapeSurface(const BlendedShape& shape, int nodes, Real volume, Real* scale) {

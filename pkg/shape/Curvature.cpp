@@ -8,27 +8,32 @@
 namespace roundedmesh {
 namespace {
 
-// The three corners' shares of a triangle's area in the mixed Voronoi regions of Meyer et al.: the
-// Voronoi share for a non-obtuse triangle; for an obtuse one, half the area to the obtuse corner and a
-// quarter to each other corner. cotangents[i] is the cotangent of the angle at corner i.
-std::array<Real, 3> mixedVoronoiShares(const std::array<Vector3r, 3>& x, const std::array<Real, 3>& cotangents,
-                                       Real area) {
+// Cotangents of the angles at the three corners.
+std::array<Real, 3> cotangents(const std::array<Vector3r, 3>& x) {
+  const Real doubleArea = (x[1] - x[0]).cross(x[2] - x[0]).norm();
+  std::array<Real, 3> cot;
+  for (int i = 0; i < 3; ++i) cot[i] = (x[(i + 1) % 3] - x[i]).dot(x[(i + 2) % 3] - x[i]) / doubleArea;
+  return cot;
+}
+
+}  // namespace
+
+std::array<Real, 3> mixedVoronoiShares(const std::array<Vector3r, 3>& x) {
+  const std::array<Real, 3> cot = cotangents(x);
+  const Real area = (x[1] - x[0]).cross(x[2] - x[0]).norm() / 2;
+  std::array<Real, 3> shares;
   for (int i = 0; i < 3; ++i)
-    if (cotangents[i] < 0) {
-      std::array<Real, 3> shares;
+    if (cot[i] < 0) {
       shares.fill(area / 4);
       shares[i] = area / 2;
       return shares;
     }
-  std::array<Real, 3> shares;
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    shares[i] = ((x[i] - x[k]).squaredNorm() * cotangents[j] + (x[i] - x[j]).squaredNorm() * cotangents[k]) / 8;
+    shares[i] = ((x[i] - x[k]).squaredNorm() * cot[j] + (x[i] - x[j]).squaredNorm() * cot[k]) / 8;
   }
   return shares;
 }
-
-}  // namespace
 
 MeanCurvature meanCurvature(const TriangleSurface& surface) {
   const std::size_t nodeCount = surface.vertices.size();
@@ -41,18 +46,13 @@ MeanCurvature meanCurvature(const TriangleSurface& surface) {
     const std::array<Vector3r, 3> x = {surface.vertices[corners[0]], surface.vertices[corners[1]],
                                        surface.vertices[corners[2]]};
     const Vector3r doubleAreaNormal = (x[1] - x[0]).cross(x[2] - x[0]);
-    const Real doubleArea = doubleAreaNormal.norm();
-    std::array<Real, 3> cotangents;
-    for (int i = 0; i < 3; ++i) {
-      const Vector3r u = x[(i + 1) % 3] - x[i], v = x[(i + 2) % 3] - x[i];
-      cotangents[i] = u.dot(v) / doubleArea;
-    }
-    shares[t] = mixedVoronoiShares(x, cotangents, doubleArea / 2);
+    const std::array<Real, 3> cot = cotangents(x);
+    shares[t] = mixedVoronoiShares(x);
     for (int i = 0; i < 3; ++i) {
       // The edge opposite corner i joins j and k; its weight is the cotangent of the angle at i.
       const int j = (i + 1) % 3, k = (i + 2) % 3;
-      laplacian[corners[j]] += cotangents[i] * (x[j] - x[k]);
-      laplacian[corners[k]] += cotangents[i] * (x[k] - x[j]);
+      laplacian[corners[j]] += cot[i] * (x[j] - x[k]);
+      laplacian[corners[k]] += cot[i] * (x[k] - x[j]);
       voronoiArea[corners[i]] += shares[t][i];
       normals[corners[i]] += doubleAreaNormal;
     }

@@ -7,6 +7,7 @@
 // Inputs: a closed, outward-oriented surface [m]. Outputs: H per node and per triangle [1/m].
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "pkg/shape/TriangleSurface.hpp"
@@ -19,6 +20,11 @@ struct MeanCurvature {
 };
 
 MeanCurvature meanCurvature(const TriangleSurface& surface);
+
+// The three corners' shares of a triangle's area in the mixed Voronoi regions of Meyer et al. [m^2]: the
+// Voronoi share for a non-obtuse triangle, (|x_i - x_k|^2 cot(angle at j) + |x_i - x_j|^2 cot(angle at k)) / 8;
+// for an obtuse one, half the area to the obtuse corner and a quarter to each other corner.
+std::array<Real, 3> mixedVoronoiShares(const std::array<Vector3r, 3>& corners);
 
 // The radius of curvature a triangle of mean curvature H uses in contact [m]: 1/H, except that flat and
 // concave triangles (H <= 1/maxRadius) use maxRadius. The contact model needs a finite, positive radius

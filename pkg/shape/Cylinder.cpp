@@ -40,48 +40,46 @@ Ring addRing(TriangleSurface& s, Real r, Real z, int count, Real offset) {
   return ring;
 }
 
-// Appends a triangle, turning it so that its normal points along `outward`.
-void addTriangle(TriangleSurface& s, Triangle t, const Vector3r& outward) {
+// Which way is out: radially on the hull, along +z or -z on a cap.
+struct Outward {
+  Real capSide;  // 0 on the hull, +1 or -1 on the top or bottom cap
+  Vector3r at(const Vector3r& x) const { return capSide == 0 ? Vector3r(x.x(), x.y(), 0) : Vector3r(0, 0, capSide); }
+};
+
+// Appends a triangle, turned so that its normal points out.
+void addTriangle(TriangleSurface& s, Triangle t, const Outward& outward) {
   const Vector3r &a = s.vertices[t[0]], &b = s.vertices[t[1]], &c = s.vertices[t[2]];
-  if ((b - a).cross(c - a).dot(outward) < 0) std::swap(t[1], t[2]);
+  if ((b - a).cross(c - a).dot(outward.at((a + b + c) / 3)) < 0) std::swap(t[1], t[2]);
   s.triangles.push_back(t);
 }
 
-Vector3r outwardAt(const TriangleSurface& s, const Triangle& t, Real halfLength) {
-  const Vector3r centroid = (s.vertices[t[0]] + s.vertices[t[1]] + s.vertices[t[2]]) / 3;
-  const bool cap = std::abs(s.vertices[t[0]].z()) == halfLength && std::abs(s.vertices[t[1]].z()) == halfLength &&
-                   std::abs(s.vertices[t[2]].z()) == halfLength;
-  return cap ? Vector3r(0, 0, centroid.z()) : Vector3r(centroid.x(), centroid.y(), 0);
-}
-
 // Triangulates the band between two rings, always advancing on the ring whose next node comes first in angle.
-void zip(TriangleSurface& s, const Ring& p, const Ring& q, Real halfLength) {
+void zip(TriangleSurface& s, const Ring& p, const Ring& q, const Outward& outward) {
   const int np = static_cast<int>(p.nodes.size()), nq = static_cast<int>(q.nodes.size());
   for (int i = 0, j = 0; i < np || j < nq;) {
-    Triangle t;
     if (j == nq || (i < np && p.angle(i + 1) <= q.angle(j + 1))) {
-      t = {p.nodes[i % np], p.nodes[(i + 1) % np], q.nodes[j % nq]};
+      addTriangle(s, {p.nodes[i % np], p.nodes[(i + 1) % np], q.nodes[j % nq]}, outward);
       ++i;
     } else {
-      t = {p.nodes[i % np], q.nodes[(j + 1) % nq], q.nodes[j % nq]};
+      addTriangle(s, {p.nodes[i % np], q.nodes[(j + 1) % nq], q.nodes[j % nq]}, outward);
       ++j;
     }
-    addTriangle(s, t, outwardAt(s, t, halfLength));
   }
 }
 
-void addCap(TriangleSurface& s, const Ring& rim, const Layout& layout, Real radius, Real z, Real halfLength) {
+void addCap(TriangleSurface& s, const Ring& rim, const Layout& layout, Real radius, Real z) {
+  const Outward outward{z > 0 ? Real(1) : Real(-1)};
   Ring outer = rim;
   for (int i = layout.capRings - 1; i >= 1; --i) {
     const int count = layout.capRingNodes(i);
     const Ring inner = addRing(s, radius * i / layout.capRings, z, count, (i % 2) * M_PI / count);
-    zip(s, outer, inner, halfLength);
+    zip(s, outer, inner, outward);
     outer = inner;
   }
   const int centre = static_cast<int>(s.vertices.size());
   s.vertices.emplace_back(0, 0, z);
   for (std::size_t i = 0; i < outer.nodes.size(); ++i)
-    addTriangle(s, {centre, outer.nodes[i], outer.nodes[(i + 1) % outer.nodes.size()]}, Vector3r(0, 0, z));
+    addTriangle(s, {centre, outer.nodes[i], outer.nodes[(i + 1) % outer.nodes.size()]}, outward);
 }
 
 }  // namespace
@@ -104,11 +102,13 @@ TriangleSurface cylinderSurface(Real radius, Real length, int nodes) {
   TriangleSurface s;
   const Real half = length / 2;
   std::vector<Ring> hull;
-  for (int j = 0; j <= layout.along; ++j)
-    hull.push_back(addRing(s, radius, -half + length * j / layout.along, layout.around, (j % 2) * M_PI / layout.around));
-  for (int j = 0; j < layout.along; ++j) zip(s, hull[j], hull[j + 1], half);
-  addCap(s, hull.front(), layout, radius, -half, half);
-  addCap(s, hull.back(), layout, radius, half, half);
+  for (int j = 0; j <= layout.along; ++j) {
+    const Real z = j == layout.along ? half : -half + length * j / layout.along;  // the rims exactly at +-half
+    hull.push_back(addRing(s, radius, z, layout.around, (j % 2) * M_PI / layout.around));
+  }
+  for (int j = 0; j < layout.along; ++j) zip(s, hull[j], hull[j + 1], Outward{0});
+  addCap(s, hull.front(), layout, radius, -half);
+  addCap(s, hull.back(), layout, radius, half);
   return s;
 }
 

@@ -95,7 +95,7 @@ TriangleSurface distortedIcosphereSurface(Real radius, int subdivisions, Real ta
   std::vector<Real> areas = triangleAreas(s);
   const int count = static_cast<int>(areas.size());
   Real sum = 0, sumOfSquares = 0;
-  for (Real a : areas) sum += a, sumOfSquares += a * a;  // the mean area stays put: the sphere's is fixed
+  for (Real a : areas) sum += a, sumOfSquares += a * a;  // updated with every accepted step
   const Real meanEdge = std::sqrt(4 * sum / count / std::sqrt(3.0));
   auto currentDistortion = [&] { return std::sqrt(std::max(sumOfSquares / count - std::pow(sum / count, 2), Real(0))) / (sum / count); };
 

@@ -19,7 +19,6 @@ struct EdgeDefects {
   EdgeDefect boundary;     // borders a single triangle: the surface has a hole
   EdgeDefect nonManifold;  // borders three or more triangles
   EdgeDefect misoriented;  // borders two triangles that run along it in the same direction
-  bool any() const { return boundary.count + nonManifold.count + misoriented.count > 0; }
 };
 
 EdgeDefects findEdgeDefects(const std::vector<Triangle>& triangles);

@@ -14,7 +14,7 @@ ImplicitSolid spheroid(Real a, Real b) {
     throw std::invalid_argument("spheroid semi-axes must be positive and finite, got a = " + std::to_string(a) +
                                 ", b = " + std::to_string(b));
   return {[a, b](const Vector3r& x) { return (x.x() * x.x() + x.y() * x.y()) / (b * b) + x.z() * x.z() / (a * a) - 1; },
-          Vector3r::Zero(), 1.1 * std::max(a, b)};
+          Vector3r::Zero(), 1.1 * std::max(a, b), 2 * std::min(a, b)};
 }
 
 }  // namespace

@@ -15,7 +15,8 @@ TriangleSurface spheroidSurface(Real a, Real b, int nodes);
 //   H = (a^2 + 2 b^2 - |x|^2) / (2 a^2 b^4 q^(3/2)),  q = (x^2 + y^2)/b^4 + z^2/a^4.
 Real spheroidMeanCurvature(Real a, Real b, const Vector3r& x);
 
-// Per triangle: H at the point of the spheroid nearest the triangle's centroid.
+// Per triangle: H where Newton steps along the gradient of f from the triangle's centroid meet the spheroid
+// (close to the nearest point; the centroid lies within a cap height of the surface).
 std::vector<Real> spheroidTriangleCurvatures(Real a, Real b, const TriangleSurface& surface);
 
 }  // namespace roundedmesh

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -40,17 +41,28 @@ class VertexNames {
   throw std::invalid_argument(std::to_string(count) + " " + (count == 1 ? singular : plural) + ", first " + where);
 }
 
-void requireFinite(const std::vector<Vector3r>& points) {
+std::vector<std::size_t> identityIndex(std::size_t count) {
+  std::vector<std::size_t> identity(count);
+  for (std::size_t v = 0; v < count; ++v) identity[v] = v;
+  return identity;
+}
+
+// Only vertices that a face uses matter: a stray point with a NaN is dropped like any unused vertex.
+void requireFinite(const std::vector<Vector3r>& points, const std::vector<bool>& used) {
   int count = 0;
   std::size_t first = 0;
   for (std::size_t v = 0; v < points.size(); ++v)
-    if (!points[v].allFinite() && count++ == 0) first = v;
-  if (count > 0) {
-    std::vector<std::size_t> identity(points.size());
-    for (std::size_t v = 0; v < identity.size(); ++v) identity[v] = v;
+    if (used[v] && !points[v].allFinite() && count++ == 0) first = v;
+  if (count > 0)
     reject(count, "vertex with a non-finite coordinate", "vertices with non-finite coordinates",
-           VertexNames(points, identity)(first));
-  }
+           VertexNames(points, identityIndex(points.size()))(first));
+}
+
+std::vector<bool> usedVertices(const PolygonSoup& soup) {
+  std::vector<bool> used(soup.points.size(), false);
+  for (const auto& polygon : soup.polygons)
+    for (std::size_t corner : polygon) used[corner] = true;
+  return used;
 }
 
 void requireValidCorners(const PolygonSoup& soup) {
@@ -67,17 +79,14 @@ void requireValidCorners(const PolygonSoup& soup) {
 }
 
 // Welds vertices with identical coordinates and drops unused ones, keeping the input's order. Returns the
-// surviving points, the input index of each, and the polygons renumbered.
+// surviving points, the input index of each, and the polygons renumbered (repeated corners removed).
 struct Welded {
   std::vector<Vector3r> points;
   std::vector<std::size_t> inputIndex;
   std::vector<std::vector<std::size_t>> polygons;
 };
 
-Welded weld(const PolygonSoup& soup) {
-  std::vector<bool> used(soup.points.size(), false);
-  for (const auto& polygon : soup.polygons)
-    for (std::size_t corner : polygon) used[corner] = true;
+Welded weld(const PolygonSoup& soup, const std::vector<bool>& used) {
   std::map<std::array<Real, 3>, std::size_t> byPosition;
   std::vector<std::size_t> renumbered(soup.points.size());
   Welded w;
@@ -91,31 +100,42 @@ Welded weld(const PolygonSoup& soup) {
     }
     renumbered[v] = it->second;
   }
+  // A face that ran through two vertices now welded into one loses the repeated corner.
   for (const auto& polygon : soup.polygons) {
     std::vector<std::size_t> corners;
-    for (std::size_t corner : polygon) corners.push_back(renumbered[corner]);
+    for (std::size_t corner : polygon)
+      if (corners.empty() || corners.back() != renumbered[corner]) corners.push_back(renumbered[corner]);
+    while (corners.size() > 1 && corners.back() == corners.front()) corners.pop_back();
     w.polygons.push_back(std::move(corners));
   }
   return w;
 }
 
 // Triangulates a face of more than three corners with CGAL's hole filling, which finds the triangulation
-// of the closed polyline with the least area (also for non-planar and non-convex faces).
-void triangulate(const std::vector<std::size_t>& face, const std::vector<Vector3r>& points,
-                 std::vector<Triangle>& out) {
-  if (face.size() == 3) {
-    out.push_back({static_cast<int>(face[0]), static_cast<int>(face[1]), static_cast<int>(face[2])});
-    return;
-  }
+// of the closed polyline with the least area (also for non-planar and non-convex faces). A face left with
+// fewer than three distinct corners after welding is degenerate.
+void triangulate(const std::vector<std::size_t>& face, std::size_t faceIndex, const std::vector<Vector3r>& points,
+                 TriangleSurface& out, std::vector<std::size_t>& faceOf) {
+  if (face.size() < 3)
+    throw std::invalid_argument("face " + std::to_string(faceIndex) + " is degenerate: it has " +
+                                std::to_string(face.size()) + " distinct corners once duplicate vertices are welded");
+  auto add = [&](std::size_t a, std::size_t b, std::size_t c) {
+    out.triangles.push_back({static_cast<int>(a), static_cast<int>(b), static_cast<int>(c)});
+    faceOf.push_back(faceIndex);
+  };
+  if (face.size() == 3) return add(face[0], face[1], face[2]);
   std::vector<Kernel::Point_3> polyline;
   for (std::size_t corner : face) polyline.emplace_back(points[corner].x(), points[corner].y(), points[corner].z());
   std::vector<CGAL::Triple<int, int, int>> patch;
   CGAL::Polygon_mesh_processing::triangulate_hole_polyline(polyline, std::back_inserter(patch));
-  for (const auto& t : patch)
-    out.push_back({static_cast<int>(face[t.first]), static_cast<int>(face[t.second]), static_cast<int>(face[t.third])});
+  if (patch.size() != face.size() - 2)
+    throw std::invalid_argument("face " + std::to_string(faceIndex) + " (" + std::to_string(face.size()) +
+                                " corners) cannot be triangulated");
+  for (const auto& t : patch) add(face[t.first], face[t.second], face[t.third]);
 }
 
-void requireNonDegenerate(const TriangleSurface& s, const VertexNames& name) {
+// faceOf: the input face each triangle comes from, for messages.
+void requireNonDegenerate(const TriangleSurface& s, const VertexNames& name, const std::vector<std::size_t>& faceOf) {
   int count = 0;
   std::size_t first = 0;
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {
@@ -128,7 +148,7 @@ void requireNonDegenerate(const TriangleSurface& s, const VertexNames& name) {
   if (count > 0) {
     const Triangle& t = s.triangles[first];
     reject(count, "degenerate (zero-area) triangle", "degenerate (zero-area) triangles",
-           "triangle " + std::to_string(first) + " at " + name(t[0]) + ", " + name(t[1]) + ", " + name(t[2]));
+           "face " + std::to_string(faceOf[first]) + " at " + name(t[0]) + ", " + name(t[1]) + ", " + name(t[2]));
   }
 }
 
@@ -148,9 +168,46 @@ void requireClosedManifoldOriented(const TriangleSurface& s, const VertexNames& 
            at(defects.misoriented));
 }
 
-Real enclosedVolume(const TriangleSurface& s) {
+// Signed volume of each connected component (triangles sharing vertices), in order of first triangle.
+struct Component {
+  Real volume = 0;
+  int firstVertex = -1;
+};
+
+std::vector<Component> components(const TriangleSurface& s) {
+  std::vector<int> parent(s.vertices.size());
+  for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = static_cast<int>(v);
+  const std::function<int(int)> root = [&](int v) { return parent[v] == v ? v : parent[v] = root(parent[v]); };
+  for (const Triangle& t : s.triangles)
+    for (int i = 1; i < 3; ++i) parent[root(t[i])] = root(t[0]);
+  std::map<int, Component> byRoot;
+  std::vector<int> order;
+  for (const Triangle& t : s.triangles) {
+    const int r = root(t[0]);
+    Component& c = byRoot[r];
+    if (c.firstVertex < 0) {
+      c.firstVertex = t[0];
+      order.push_back(r);
+    }
+    c.volume += s.vertices[t[0]].dot(s.vertices[t[1]].cross(s.vertices[t[2]])) / 6;
+  }
+  std::vector<Component> out;
+  for (int r : order) out.push_back(byRoot[r]);
+  return out;
+}
+
+// The enclosed volume, positive or negative (inside-out). Every connected component must turn the same
+// way: a body made of pieces some of which are inside-out cannot be repaired safely (nor can a cavity
+// be told from a piece turned inside-out).
+Real enclosedVolume(const TriangleSurface& s, const VertexNames& name) {
   Eigen::AlignedBox<Real, 3> box;
   for (const Vector3r& v : s.vertices) box.extend(v);
+  const std::vector<Component> parts = components(s);
+  for (const Component& part : parts)
+    if (part.volume * parts.front().volume < 0)
+      throw std::invalid_argument("the surface has " + std::to_string(parts.size()) + " separate parts of opposite " +
+                                  "orientation (inside-out pieces, or a cavity), first the part at " +
+                                  name(part.firstVertex) + ": orient every part outward");
   const Real volume = massProperties(s.vertices, s.triangles).volume;
   // A closed surface folded flat encloses nothing; round-off alone stays far below 1e-9 of its box.
   if (!(std::abs(volume) > 1e-9 * box.volume()))
@@ -159,8 +216,8 @@ Real enclosedVolume(const TriangleSurface& s) {
   return volume;
 }
 
-void checkSurface(const TriangleSurface& s, const VertexNames& name) {
-  requireNonDegenerate(s, name);
+void checkSurface(const TriangleSurface& s, const VertexNames& name, const std::vector<std::size_t>& faceOf) {
+  requireNonDegenerate(s, name, faceOf);
   requireClosedManifoldOriented(s, name);
 }
 
@@ -170,25 +227,27 @@ TriangleSurface repairedSurface(const PolygonSoup& soup) {
   if (soup.points.empty() || soup.polygons.empty())
     throw std::invalid_argument("the mesh is empty (" + std::to_string(soup.points.size()) + " vertices, " +
                                 std::to_string(soup.polygons.size()) + " faces)");
-  requireFinite(soup.points);
   requireValidCorners(soup);
-  Welded welded = weld(soup);
+  const std::vector<bool> used = usedVertices(soup);
+  requireFinite(soup.points, used);
+  Welded welded = weld(soup, used);
   TriangleSurface s;
-  for (const auto& face : welded.polygons) triangulate(face, welded.points, s.triangles);
+  std::vector<std::size_t> faceOf;
+  for (std::size_t f = 0; f < welded.polygons.size(); ++f) triangulate(welded.polygons[f], f, welded.points, s, faceOf);
   s.vertices = std::move(welded.points);
   const VertexNames name(s.vertices, std::move(welded.inputIndex));
-  checkSurface(s, name);
-  if (enclosedVolume(s) < 0)
+  checkSurface(s, name, faceOf);
+  if (enclosedVolume(s, name) < 0)
     for (Triangle& t : s.triangles) std::swap(t[1], t[2]);
   return s;
 }
 
 void requireValidSurface(const TriangleSurface& surface) {
-  requireFinite(surface.vertices);
-  std::vector<std::size_t> identity(surface.vertices.size());
-  for (std::size_t v = 0; v < identity.size(); ++v) identity[v] = v;
-  checkSurface(surface, VertexNames(surface.vertices, identity));
-  if (enclosedVolume(surface) < 0)
+  const std::vector<bool> everyVertex(surface.vertices.size(), true);
+  requireFinite(surface.vertices, everyVertex);
+  const VertexNames name(surface.vertices, identityIndex(surface.vertices.size()));
+  checkSurface(surface, name, identityIndex(surface.triangles.size()));
+  if (enclosedVolume(surface, name) < 0)
     throw std::invalid_argument("the surface is inside-out: its triangles must run counter-clockwise seen from "
                                 "outside");
 }

@@ -4,10 +4,10 @@
 // stores every triangle's corners separately), vertices no polygon uses are dropped, polygons with more
 // than three corners are triangulated (CGAL), and a surface that is entirely inside-out is reversed.
 // Rejected, with std::invalid_argument naming the defect, how often it occurs and where it first occurs
-// (vertex index in the input and coordinates): non-finite coordinates, corner indices out of range,
-// polygons with fewer than three corners, degenerate (zero-area) triangles, boundary edges (not closed),
-// edges bordering more than two triangles (not edge-manifold), neighbouring triangles of opposite
-// orientation, and a surface that encloses no volume.
+// (face number and vertex index in the input, coordinates): non-finite coordinates, corner indices out of
+// range, faces with fewer than three distinct corners, degenerate (zero-area) triangles, boundary edges (not
+// closed), edges bordering more than two triangles (not edge-manifold), neighbouring triangles of opposite
+// orientation, separate parts of opposite orientation, and a surface that encloses no volume.
 #pragma once
 
 #include <cstddef>

@@ -160,6 +160,8 @@ MeshPtr restoreMesh(const bp::object& vertices, const bp::object& triangles, con
   } else {
     curvature.meanCurvatures = toPerTriangle(curvatures, count, "curvatures");
   }
+  if (mode != "computed" && mode != "prescribed")
+    raiseValueError("mode must be 'computed' or 'prescribed', got '" + mode + "'");
   curvature.source = mode == "computed" ? CurvatureSource::Computed : CurvatureSource::Prescribed;
   curvature.maxRadius = maxRadius.is_none() ? *std::max_element(r.begin(), r.end()) : bp::extract<Real>(maxRadius)();
   return std::make_shared<BodyMesh>(shape, centroid, orientation, std::move(curvature));
@@ -213,7 +215,7 @@ void exposeMesh() {
            "curvature: 'exact' (every triangle has the sphere's radius) or 'computed' (Eq. 1 from the mesh).")
       .staticmethod("icosphere")
       .def("spheroid", &makeSpheroid, (bp::arg("a"), bp::arg("b"), bp::arg("nodes"), bp::arg("curvature") = "exact"),
-           "Spheroid with semi-axis a [m] along z and b [m] across, about `nodes` nodes (within 2 %), near-\n"
+           "Spheroid with semi-axis a [m] along z and b [m] across, about `nodes` nodes (typically within 2 %), near-\n"
            "equilateral triangles. curvature: 'exact' (the spheroid's mean curvature under each triangle) or\n"
            "'computed' (Eq. 1 from the mesh).")
       .staticmethod("spheroid")

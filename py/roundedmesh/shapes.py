@@ -39,8 +39,10 @@ def _meshed(name, nodes):
     for p in shape["primitives"]:
         if p["type"] == "sphere":
             primitives.append((tuple(p["center"]), tuple(p["center"]), p["radius"]))
-        else:
+        elif p["type"] == "capsule":
             primitives.append((tuple(p["a"]), tuple(p["b"]), p["radius"]))
+        else:
+            raise ValueError(f"shapes.json: {name} has a primitive of unknown type {p['type']!r}")
     radius = definitions()["volume_equivalent_radius"]
     return Mesh._blended_shape(shape["blend_k"], primitives, nodes, 4 / 3 * math.pi * radius**3)
 
@@ -48,7 +50,7 @@ def _meshed(name, nodes):
 def reference_shape(name, nodes=None):
     """Mesh.reference_shape(name, nodes=None): the reference shape `name` ('pear' or 'gummy_bear') of
     shapes.json, meshed from its implicit function with CGAL into near-equilateral triangles with about
-    `nodes` nodes (within 2 %; default the paper's 486 and 554), scaled so that its volume is that of a
+    `nodes` nodes (typically within 2 %; default the paper's 486 and 554), scaled so that its volume is that of a
     sphere of radius 0.025 m, with each triangle's curvature computed from the mesh (Eq. 1). Concave regions
     (the gummy bear's neck, between the legs) get negative curvature. Meshes are cached: asking again for
     the same shape and node count returns the same Mesh."""

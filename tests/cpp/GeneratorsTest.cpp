@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <utility>
 
 #include "pkg/shape/BlendedShape.hpp"
 #include "pkg/shape/Cylinder.hpp"
@@ -89,6 +90,16 @@ TEST(Spheroid, MassPropertiesConvergeToTheAnalyticOnes) {
   const Real a = 1.5, b = 1.0, volume = 4 * M_PI * a * b * b / 3;
   expectMassPropertiesConverge([&](int nodes) { return spheroidSurface(a, b, nodes); }, volume,
                                volume / 5 * Vector3r(a * a + b * b, a * a + b * b, 2 * b * b));
+}
+
+// Lengths whose ring heights are not exact in binary, short and long cylinders, coarse and fine.
+TEST(Cylinder, IsClosedAndOutwardForAnyProportions) {
+  for (const auto& [radius, length] : {std::pair<Real, Real>{0.01, 0.011}, {0.01, 0.029}, {0.01, 0.1}, {0.3, 0.07}})
+    for (int nodes : {30, 300, 1000}) {
+      const TriangleSurface s = cylinderSurface(radius, length, nodes);
+      EXPECT_NO_THROW(requireValidSurface(s)) << radius << " " << length << " " << nodes;
+      EXPECT_NEAR(massProperties(s.vertices, s.triangles).volume / (M_PI * radius * radius * length), 1, 0.2);
+    }
 }
 
 TEST(Cylinder, HasTheRequestedNodesAndFlatCaps) {

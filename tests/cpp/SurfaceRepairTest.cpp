@@ -101,7 +101,7 @@ TEST(SurfaceRepair, NamesADegenerateTriangle) {
   degenerate.polygons[2] = {0, 1, 3};   // the face 0-1-3 unsplit ...
   degenerate.polygons[3] = {1, 4, 0};   // ... and the sliver 1-4-0 on the other side of the seam
   const std::string message = messageOf(degenerate);
-  EXPECT_NE(message.find("1 degenerate (zero-area) triangle, first triangle 3 at vertex 1 (2, 0, 0), vertex 4 (1, 0, 0), "
+  EXPECT_NE(message.find("1 degenerate (zero-area) triangle, first face 3 at vertex 1 (2, 0, 0), vertex 4 (1, 0, 0), "
                          "vertex 0 (0, 0, 0)"),
             std::string::npos)
       << message;

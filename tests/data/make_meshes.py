@@ -53,8 +53,8 @@ def write_ascii_stl(name, vertices, faces):
         f.write("endsolid octahedron\n")
 
 
-def binary_stl(vertices, faces, declared=None):
-    data = bytearray(b"binary STL written by tests/data/make_meshes.py".ljust(80, b" "))
+def binary_stl(vertices, faces, declared=None, header=b"binary STL written by tests/data/make_meshes.py"):
+    data = bytearray(header.ljust(80, b" "))
     data += struct.pack("<I", len(faces) if declared is None else declared)
     for face in faces:
         data += struct.pack("<3f", *normal(vertices, face))
@@ -87,6 +87,8 @@ def main():
     write_ascii_stl("octahedron_ascii.stl", VERTICES, TRIANGLES)
     with open(path("octahedron_binary.stl"), "wb") as f:
         f.write(binary_stl(VERTICES, TRIANGLES))
+    with open(path("octahedron_binary_solid_header.stl"), "wb") as f:  # as many exporters write them
+        f.write(binary_stl(VERTICES, TRIANGLES, header=b"solid octahedron, but binary"))
     write_ply("octahedron_ascii.ply", VERTICES, TRIANGLES, binary=False)
     write_ply("octahedron_binary.ply", VERTICES, TRIANGLES, binary=True)
 
@@ -95,6 +97,10 @@ def main():
     write_obj("duplicate_vertices.obj", each_own, np.arange(len(each_own)).reshape(-1, 3),
               "octahedron, every triangle with its own three vertices (unwelded)")
     write_ascii_stl("inside_out.stl", VERTICES, TRIANGLES[:, ::-1])
+    doubled_corner = [list(face) for face in TRIANGLES]
+    doubled_corner[0] = [0, 2, 6, 4]  # vertex 6 repeats vertex 4: the face is a triangle once welded
+    write_obj("repeated_corner.obj", np.vstack([VERTICES, VERTICES[4]]), doubled_corner,
+              "octahedron whose face 0 runs through two copies of the same point")
     cube = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], float)
     write_obj("cube_quads.obj", cube, [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6],
                                        [3, 0, 4, 7]], "unit cube as six quads")
@@ -115,6 +121,10 @@ def main():
     broken = VERTICES.copy()
     broken[3, 1] = np.nan
     write_ply("nan.ply", broken, TRIANGLES, binary=True)
+    write_off("opposite_parts.off", np.vstack([VERTICES, VERTICES + [5, 0, 0]]),
+              np.vstack([TRIANGLES, TRIANGLES[:, ::-1] + 6]))
+    write_obj("collapsed_face.obj", np.vstack([VERTICES, VERTICES[0], VERTICES[2]]),
+              [list(face) for face in TRIANGLES] + [[0, 6, 7, 2]], "octahedron plus a face that welds down to two corners")
     open(path("empty.stl"), "wb").close()
     with open(path("truncated.stl"), "wb") as f:
         f.write(binary_stl(VERTICES, TRIANGLES)[:84 + 3 * 50 + 20])

@@ -11,7 +11,7 @@ import roundedmesh as rm
 
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "data")
 GOOD = ["octahedron.obj", "octahedron.off", "octahedron_ascii.stl", "octahedron_binary.stl",
-        "octahedron_ascii.ply", "octahedron_binary.ply"]
+        "octahedron_binary_solid_header.stl", "octahedron_ascii.ply", "octahedron_binary.ply"]
 
 
 def data(name):
@@ -42,7 +42,7 @@ def test_scale_converts_units():
         rm.Mesh.load(data("octahedron.obj"), scale=-1.0)
 
 
-@pytest.mark.parametrize("name", ["duplicate_vertices.obj", "inside_out.stl"])
+@pytest.mark.parametrize("name", ["duplicate_vertices.obj", "inside_out.stl", "repeated_corner.obj"])
 def test_repairable_defects_are_repaired(name):
     mesh = rm.Mesh.load(data(name))
     np.testing.assert_allclose(input_frame(mesh), input_frame(rm.Mesh.load(data("octahedron.obj"))), atol=1e-15)
@@ -64,7 +64,10 @@ def test_quads_are_triangulated():
                          r"consistently oriented\), first at the edge from vertex \d+ \("),
     ("nonmanifold_edge.off", r"nonmanifold_edge\.off: 1 non-manifold edge \(bordering more than two triangles\), first "
                              r"at the edge from vertex 0 \(1, 0, 0\) to vertex 2 \(0, 1, 0\)"),
-    ("degenerate.off", r"degenerate\.off: 1 degenerate \(zero-area\) triangle, first triangle 3 at vertex 1 \(2, 0, 0\)"),
+    ("degenerate.off", r"degenerate\.off: 1 degenerate \(zero-area\) triangle, first face 3 at vertex 1 \(2, 0, 0\)"),
+    ("collapsed_face.obj", r"collapsed_face\.obj: face 8 is degenerate: it has 2 distinct corners"),
+    ("opposite_parts.off", r"opposite_parts\.off: the surface has 2 separate parts of opposite orientation .*, "
+                           r"first the part at vertex 10 \(5, 0, 0\.75\)"),
     ("flat.obj", r"flat\.obj: the surface encloses no volume"),
     ("nan.ply", r"nan\.ply: 1 vertex with a non-finite coordinate, first vertex 3 \(0, nan, 0\)"),
     ("empty.stl", r"empty\.stl: the file is empty"),
@@ -107,10 +110,11 @@ def test_saving_to_an_unknown_format_or_place_fails():
 
 def test_arrays_go_through_the_same_checks():
     octahedron = rm.Mesh.load(data("octahedron.obj"))
-    corners = input_frame(octahedron)
     with pytest.raises(ValueError, match="mesh: 3 boundary edges"):
         rm.Mesh.from_arrays(octahedron.vertices, octahedron.triangles[1:])
     inside_out = rm.Mesh.from_arrays(octahedron.vertices, octahedron.triangles[:, ::-1])
     assert inside_out.volume == pytest.approx(1.5, rel=1e-14)
-    assert corners.shape == (6, 3)
-    assert not math.isnan(inside_out.volume)
+    np.testing.assert_allclose(inside_out.normals, octahedron.normals, atol=1e-15)
+    # A stray vertex with a NaN is unused, hence dropped like any unused vertex.
+    stray = np.vstack([octahedron.vertices, [math.nan, 0, 0]])
+    assert len(rm.Mesh.from_arrays(stray, octahedron.triangles).vertices) == 6
