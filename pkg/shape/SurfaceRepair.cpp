@@ -211,8 +211,11 @@ Real enclosedVolume(const TriangleSurface& s, const VertexNames& name) {
   const Real volume = massProperties(s.vertices, s.triangles).volume;
   // A closed surface folded flat encloses nothing; round-off alone stays far below 1e-9 of its box.
   if (!(std::abs(volume) > 1e-9 * box.volume()))
-    throw std::invalid_argument("the surface encloses no volume (" + std::to_string(volume) +
-                                " m^3): it is flat or folded onto itself");
+  {
+    std::ostringstream message;
+    message << "the surface encloses no volume (" << volume << " m^3): it is flat or folded onto itself";
+    throw std::invalid_argument(message.str());
+  }
   return volume;
 }
 
