@@ -79,17 +79,18 @@ Mesh sampleSurface(const ImplicitSolid& solid, Real spacing) {
             if (m > 0) corner |= path[m - 1];
             node[m] = index(i + (corner & 1), j + ((corner >> 1) & 1), k + ((corner >> 2) & 1));
           }
-          std::vector<std::int64_t> in, out;
-          for (std::int64_t g : node) (value[g] < 0 ? in : out).push_back(g);
-          if (in.empty() || out.empty()) continue;
+          std::array<std::int64_t, 4> in, out;
+          int inCount = 0, outCount = 0;
+          for (std::int64_t g : node) value[g] < 0 ? in[inCount++] = g : out[outCount++] = g;
+          if (inCount == 0 || outCount == 0) continue;
           Vector3r outward = Vector3r::Zero();
-          for (std::int64_t g : out) outward += position(g) / out.size();
-          for (std::int64_t g : in) outward -= position(g) / in.size();
-          if (in.size() == 1 || out.size() == 1) {
-            const auto& lone = in.size() == 1 ? in : out;
-            const auto& rest = in.size() == 1 ? out : in;
+          for (int m = 0; m < outCount; ++m) outward += position(out[m]) / outCount;
+          for (int m = 0; m < inCount; ++m) outward -= position(in[m]) / inCount;
+          if (inCount == 1 || outCount == 1) {
+            const auto& lone = inCount == 1 ? in : out;
+            const auto& rest = inCount == 1 ? out : in;
             std::array<Mesh::Vertex_index, 3> t;
-            for (int m = 0; m < 3; ++m) t[m] = in.size() == 1 ? crossing(lone[0], rest[m]) : crossing(rest[m], lone[0]);
+            for (int m = 0; m < 3; ++m) t[m] = inCount == 1 ? crossing(lone[0], rest[m]) : crossing(rest[m], lone[0]);
             addTriangle(t, outward);
           } else {
             const Mesh::Vertex_index p = crossing(in[0], out[0]), q = crossing(in[0], out[1]),

@@ -65,10 +65,9 @@ BodyMesh::BodyMesh(const RoundedMesh& bodyFrameMesh, const Vector3r& inputCentro
   const MassProperties mass = solidMassProperties(bodyFrameMesh.vertices(), bodyFrameMesh.triangles());
   if (curvature_.meanCurvatures.size() != bodyFrameMesh.radii().size())
     throw std::invalid_argument("curvature: one value per triangle expected");
-  Eigen::AlignedBox<Real, 3> box;
-  for (const Vector3r& v : bodyFrameMesh.vertices()) box.extend(v);
+  const Real size = boundingBox(bodyFrameMesh.vertices()).diagonal().norm();
   const Matrix3r offDiagonal = mass.inertia - Matrix3r(mass.inertia.diagonal().asDiagonal());
-  if (mass.centroid.norm() > 1e-6 * box.diagonal().norm() || offDiagonal.norm() > 1e-6 * mass.inertia.trace())
+  if (mass.centroid.norm() > 1e-6 * size || offDiagonal.norm() > 1e-6 * mass.inertia.trace())
     throw std::invalid_argument("mesh: the vertices are not in the principal frame of the mesh");
   volume_ = mass.volume;
   principalMoments_ = mass.inertia.diagonal();

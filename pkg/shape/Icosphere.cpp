@@ -71,11 +71,6 @@ std::vector<std::vector<int>> trianglesAroundNodes(const TriangleSurface& s) {
   return around;
 }
 
-Real area(const TriangleSurface& s, int t) {
-  const Vector3r &a = s.vertices[s.triangles[t][0]], &b = s.vertices[s.triangles[t][1]], &c = s.vertices[s.triangles[t][2]];
-  return 0.5 * (b - a).cross(c - a).norm();
-}
-
 // Outward (not folded over) and not collapsed: the sphere's centre sees the triangle counter-clockwise.
 bool valid(const TriangleSurface& s, int t, Real minimumArea) {
   const Vector3r &a = s.vertices[s.triangles[t][0]], &b = s.vertices[s.triangles[t][1]], &c = s.vertices[s.triangles[t][2]];
@@ -118,7 +113,7 @@ TriangleSurface distortedIcosphereSurface(Real radius, int subdivisions, Real ta
         continue;
       }
       for (int t : around[node]) {
-        const Real updated = area(s, t);
+        const Real updated = triangleArea(s, t);
         sum += updated - areas[t];
         sumOfSquares += updated * updated - areas[t] * areas[t];
         areas[t] = updated;

@@ -1,5 +1,7 @@
 #include "pkg/shape/RoundedMesh.hpp"
 
+#include "pkg/shape/TriangleSurface.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -51,8 +53,7 @@ RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> t
     const Vector3r &a = vertices_[tri[0]], &b = vertices_[tri[1]], &c = vertices_[tri[2]];
     const Vector3r doubleAreaNormal = (b - a).cross(c - a);
     const Real doubleArea = doubleAreaNormal.norm();
-    const Real longestEdgeSq = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-    if (!(doubleArea > 1e-12 * longestEdgeSq))
+    if (hasZeroArea(a, b, c))
       reject("triangles: triangle " + std::to_string(t) + " (vertices " + std::to_string(tri[0]) + ", " +
              std::to_string(tri[1]) + ", " + std::to_string(tri[2]) + ") has zero area, near " + describe(a));
 

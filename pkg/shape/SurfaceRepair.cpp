@@ -139,11 +139,8 @@ void requireNonDegenerate(const TriangleSurface& s, const VertexNames& name, con
   int count = 0;
   std::size_t first = 0;
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-    const Vector3r &a = s.vertices[s.triangles[t][0]], &b = s.vertices[s.triangles[t][1]],
-                   &c = s.vertices[s.triangles[t][2]];
-    const Real longestEdgeSq = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-    // Relative to the longest edge: round-off of any sensible triangle is far above 1e-12.
-    if (!((b - a).cross(c - a).norm() > 1e-12 * longestEdgeSq) && count++ == 0) first = t;
+    const Triangle& corners = s.triangles[t];
+    if (hasZeroArea(s.vertices[corners[0]], s.vertices[corners[1]], s.vertices[corners[2]]) && count++ == 0) first = t;
   }
   if (count > 0) {
     const Triangle& t = s.triangles[first];
@@ -170,8 +167,8 @@ void requireClosedManifoldOriented(const TriangleSurface& s, const VertexNames& 
 
 // Signed volume of each connected component (triangles sharing vertices), in order of first triangle.
 struct Component {
-  Real volume = 0;
-  int firstVertex = -1;
+  Real volume;
+  int firstVertex;
 };
 
 std::vector<Component> components(const TriangleSurface& s) {
@@ -180,19 +177,15 @@ std::vector<Component> components(const TriangleSurface& s) {
   const std::function<int(int)> root = [&](int v) { return parent[v] == v ? v : parent[v] = root(parent[v]); };
   for (const Triangle& t : s.triangles)
     for (int i = 1; i < 3; ++i) parent[root(t[i])] = root(t[0]);
-  std::map<int, Component> byRoot;
+  std::map<int, std::vector<Triangle>> byRoot;
   std::vector<int> order;
   for (const Triangle& t : s.triangles) {
-    const int r = root(t[0]);
-    Component& c = byRoot[r];
-    if (c.firstVertex < 0) {
-      c.firstVertex = t[0];
-      order.push_back(r);
-    }
-    c.volume += s.vertices[t[0]].dot(s.vertices[t[1]].cross(s.vertices[t[2]])) / 6;
+    std::vector<Triangle>& part = byRoot[root(t[0])];
+    if (part.empty()) order.push_back(root(t[0]));
+    part.push_back(t);
   }
   std::vector<Component> out;
-  for (int r : order) out.push_back(byRoot[r]);
+  for (int r : order) out.push_back({massProperties(s.vertices, byRoot[r]).volume, byRoot[r].front()[0]});
   return out;
 }
 
@@ -200,8 +193,6 @@ std::vector<Component> components(const TriangleSurface& s) {
 // way: a body made of pieces some of which are inside-out cannot be repaired safely (nor can a cavity
 // be told from a piece turned inside-out).
 Real enclosedVolume(const TriangleSurface& s, const VertexNames& name) {
-  Eigen::AlignedBox<Real, 3> box;
-  for (const Vector3r& v : s.vertices) box.extend(v);
   const std::vector<Component> parts = components(s);
   for (const Component& part : parts)
     if (part.volume * parts.front().volume < 0)
@@ -210,7 +201,7 @@ Real enclosedVolume(const TriangleSurface& s, const VertexNames& name) {
                                   name(part.firstVertex) + ": orient every part outward");
   const Real volume = massProperties(s.vertices, s.triangles).volume;
   // A closed surface folded flat encloses nothing; round-off alone stays far below 1e-9 of its box.
-  if (!(std::abs(volume) > 1e-9 * box.volume()))
+  if (!(std::abs(volume) > 1e-9 * boundingBox(s.vertices).volume()))
   {
     std::ostringstream message;
     message << "the surface encloses no volume (" << volume << " m^3): it is flat or folded onto itself";

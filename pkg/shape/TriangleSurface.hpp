@@ -5,6 +5,8 @@
 
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "pkg/common/Types.hpp"
 #include "pkg/shape/RoundedMesh.hpp"
 
@@ -15,7 +17,14 @@ struct TriangleSurface {
   std::vector<Triangle> triangles;
 };
 
-// Triangle areas [m^2].
+// Area of triangle t [m^2], and of every triangle.
+Real triangleArea(const TriangleSurface& surface, int t);
 std::vector<Real> triangleAreas(const TriangleSurface& surface);
+
+// Whether the triangle a, b, c has no area worth the name: twice its area at most 1e-12 of its longest edge
+// squared. Relative, so that it holds at any scale; round-off of any sensible triangle is far above it.
+bool hasZeroArea(const Vector3r& a, const Vector3r& b, const Vector3r& c);
+
+Eigen::AlignedBox<Real, 3> boundingBox(const std::vector<Vector3r>& points);
 
 }  // namespace roundedmesh

@@ -145,25 +145,20 @@ bp::tuple reduce(const bp::object& self) {
                                        m.curvature().maxRadius));
 }
 
-// Unpickling: a mesh already in its principal frame, with the pose it was given in. Scenes saved before
-// curvatures were kept have none: the radii's 1/R, prescribed, is then what they were.
+// Unpickling: a mesh already in its principal frame, with the pose it was given in (roundedmesh._restore_mesh
+// fills in what older records lack).
 MeshPtr restoreMesh(const bp::object& vertices, const bp::object& triangles, const bp::object& radii,
                     const Vector3r& centroid, const Quaternionr& orientation, const bp::object& curvatures,
-                    const std::string& mode, const bp::object& maxRadius) {
+                    const std::string& mode, Real maxRadius) {
   std::vector<Triangle> corners = toTriangles(triangles, "triangles");
   const int count = static_cast<int>(corners.size());
-  const std::vector<Real> r = toPerTriangle(radii, count, "radii");
-  RoundedMesh shape(toPoints(vertices, "vertices"), std::move(corners), r);
+  RoundedMesh shape(toPoints(vertices, "vertices"), std::move(corners), toPerTriangle(radii, count, "radii"));
   SurfaceCurvature curvature;
-  if (curvatures.is_none()) {
-    for (Real radius : r) curvature.meanCurvatures.push_back(1 / radius);
-  } else {
-    curvature.meanCurvatures = toPerTriangle(curvatures, count, "curvatures");
-  }
+  curvature.meanCurvatures = toPerTriangle(curvatures, count, "curvatures");
   if (mode != "computed" && mode != "prescribed")
     raiseValueError("mode must be 'computed' or 'prescribed', got '" + mode + "'");
   curvature.source = mode == "computed" ? CurvatureSource::Computed : CurvatureSource::Prescribed;
-  curvature.maxRadius = maxRadius.is_none() ? *std::max_element(r.begin(), r.end()) : bp::extract<Real>(maxRadius)();
+  curvature.maxRadius = maxRadius;
   return std::make_shared<BodyMesh>(shape, centroid, orientation, std::move(curvature));
 }
 
@@ -229,7 +224,7 @@ void exposeMesh() {
       .staticmethod("_blended_shape")
       .def("_restore", &restoreMesh,
            (bp::arg("vertices"), bp::arg("triangles"), bp::arg("radii"), bp::arg("centroid"), bp::arg("orientation"),
-            bp::arg("curvatures") = bp::object(), bp::arg("mode") = "prescribed", bp::arg("max_radius") = bp::object()),
+            bp::arg("curvatures"), bp::arg("mode"), bp::arg("max_radius")),
            "A mesh already in its principal frame, as pickled or saved with a scene, rebuilt without moving it.")
       .staticmethod("_restore")
       .add_property("vertices", +[](const BodyMesh& m) { return toArray(m.shape().vertices()); },

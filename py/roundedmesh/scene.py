@@ -94,14 +94,26 @@ def _store_mesh(mesh):
     return key
 
 
+def _restore_mesh(vertices, triangles, radii, centroid, orientation, curvatures=None, mode="prescribed",
+                  max_radius=None):
+    """Unpickles a Mesh (see Mesh.__reduce__), also from a scene's record. Meshes saved before curvatures were
+    kept have only radii: their curvature was then the prescribed 1/R, and no radius exceeded the largest."""
+    radii = np.asarray(radii, float)
+    if curvatures is None:
+        curvatures = 1 / radii
+    if max_radius is None:
+        max_radius = float(radii.max())
+    return Mesh._restore(vertices, triangles, radii, centroid, orientation, curvatures, mode, max_radius)
+
+
 def _load_mesh(key):
     mesh = _meshes.get(key)
     if mesh is None:
         r = json.loads(_tag("mesh." + key))
         w, x, y, z = r["orientation"]
-        # Scenes saved before curvatures were kept lack the last three fields; _restore then uses 1/radii.
+        # Scenes saved before curvatures were kept lack the last three fields; _restore_mesh fills them in.
         curvatures = _decode(r["curvatures"], "<f8") if "curvatures" in r else None
-        mesh = Mesh._restore(_decode(r["vertices"], "<f8", 3), _decode(r["triangles"], "<i8", 3),
+        mesh = _restore_mesh(_decode(r["vertices"], "<f8", 3), _decode(r["triangles"], "<i8", 3),
                              _decode(r["radii"], "<f8"), Vector3(*r["centroid"]), Quaternion(w, x, y, z),
                              curvatures, r.get("curvature_mode", "prescribed"), r.get("max_radius"))
         _meshes[key] = mesh

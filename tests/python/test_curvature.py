@@ -67,6 +67,10 @@ def test_pickling_keeps_the_curvature():
     assert again.max_radius == mesh.max_radius
     np.testing.assert_array_equal(again.curvatures, mesh.curvatures)
     np.testing.assert_array_equal(again.radii, mesh.radii)
+    # A record from before curvatures were kept: prescribed 1/R, capped at the largest radius.
+    old = rm._restore_mesh(mesh.vertices, mesh.triangles, mesh.radii, mesh.centroid, mesh.orientation)
+    assert old.curvature_mode == "prescribed" and old.max_radius == mesh.radii.max()
+    np.testing.assert_allclose(old.curvatures, 1 / mesh.radii, rtol=1e-15)
 
 
 def test_distortion_is_eq_26():

@@ -70,7 +70,7 @@ def test_reference_shapes_are_closed_outward_and_of_the_target_volume(name, pape
 
 def test_gummy_bear_has_concave_regions_and_the_pear_none():
     bear, pear = rm.Mesh.reference_shape("gummy_bear"), rm.Mesh.reference_shape("pear")
-    assert np.mean(bear.curvatures < 0) > 0.05  # neck, armpits, between the legs: 13 % measured
+    assert np.mean(bear.curvatures < 0) > 0.05  # neck, armpits, between the legs: 14 % measured
     np.testing.assert_allclose(bear.radii[bear.curvatures < 0], bear.max_radius)
     assert np.all(pear.curvatures > 0)
     assert np.all(np.isfinite(bear.radii)) and np.all(bear.radii > 0)
