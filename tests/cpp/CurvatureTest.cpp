@@ -79,6 +79,15 @@ TEST(Curvature, ScalesInverselyWithTheMesh) {
   for (std::size_t i = 0; i < unit.nodes.size(); ++i) EXPECT_NEAR(scaled.nodes[i], unit.nodes[i] / 3, 1e-12);
 }
 
+// The analytic reference itself, against the principal curvatures of a spheroid of revolution (semi-axis a
+// along z, b across): at the pole both are a/b^2; at the equator 1/b (parallel) and b/a^2 (meridian).
+TEST(Curvature, SpheroidFormulaMatchesItsPrincipalCurvatures) {
+  const Real a = 2.0, b = 0.5;
+  EXPECT_NEAR(spheroidMeanCurvature(a, b, {0, 0, a}), a / (b * b), 1e-12);
+  EXPECT_NEAR(spheroidMeanCurvature(a, b, {0, b, 0}), (1 / b + b / (a * a)) / 2, 1e-12);
+  EXPECT_NEAR(spheroidMeanCurvature(1.5, 1.5, Vector3r(1, 1, 1).normalized() * 1.5), 1 / 1.5, 1e-12);
+}
+
 // The spheroid meshed by CGAL's isotropic remeshing has nodes of valence 5 to 7, where the cotangent
 // operator is not pointwise convergent (Xu 2004; Hildebrandt et al. 2006): refining does not shrink the
 // worst node's error. Measured at 642 and 2562 nodes: RMS 1.3 to 1.9 %, worst node 6.5 to 9.4 %. What does
