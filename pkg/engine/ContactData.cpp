@@ -2,6 +2,14 @@
 
 namespace roundedmesh {
 
+ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& other) {
+  bodyPairs += other.bodyPairs;
+  quadratureContacts += other.quadratureContacts;
+  directContacts += other.directContacts;
+  slidingContacts += other.slidingContacts;
+  return *this;
+}
+
 void ContactData::resize(const ContactModel& model) {
   bodyStates.resize(model.bodies.size());
   partnerStates.resize(model.partners.size());

@@ -1,6 +1,7 @@
 // What changes every step: the states the engine reads (filled by the caller, in the order of the
-// model's bodies and partners), the wrenches it produces (force [N] and torque [N m] about each body's
-// own position, global frame), contact counts, and scratch space reused from step to step.
+// model's bodies and partners), the candidate pairs of the broad phase, the wrenches the engine produces
+// (force [N] and torque [N m] about each body's own position, global frame), contact counts, and scratch
+// space reused from step to step.
 #pragma once
 
 #include <vector>
@@ -13,9 +14,25 @@
 namespace roundedmesh {
 
 struct ContactStatistics {
-  int bodyPairs = 0;           // body-partner pairs whose bounds overlap
+  int bodyPairs = 0;           // pairs whose bounds overlap
   int quadratureContacts = 0;  // triangle contacts integrated by quadrature
   int directContacts = 0;      // triangle contacts in the direct regime
+  int slidingContacts = 0;     // triangle contacts sliding (Eq. 21)
+
+  ContactStatistics& operator+=(const ContactStatistics& other);
+};
+
+// A candidate of the broad phase: rounded body `body` against `other`, an index into the model's bodies
+// (other < bodies.size()) or, past them, into its partners (other - bodies.size()).
+struct BodyPair {
+  int body;
+  int other;
+};
+
+// The outcome of one pair: the wrench on each side (global frame, torque about each one's position).
+struct PairResult {
+  Wrench onBody, onOther;
+  ContactStatistics statistics;
 };
 
 struct ContactData {
@@ -24,7 +41,10 @@ struct ContactData {
   std::vector<Wrench> bodyWrenches;
   std::vector<Wrench> partnerWrenches;
   ContactStatistics statistics;
-  std::vector<PressureGeom> geoms;  // scratch: the contacts of one body pair
+
+  std::vector<BodyPair> pairs;                    // broad phase output
+  std::vector<PairResult> pairResults;            // narrow phase output, one per pair
+  std::vector<std::vector<PressureGeom>> geoms;   // scratch: one per thread
 
   // Sizes every array for `model`; states are left for the caller to fill.
   void resize(const ContactModel& model);

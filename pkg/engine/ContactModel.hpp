@@ -1,6 +1,7 @@
 // What the contact engine knows that does not change from step to step: the rounded bodies with their
-// meshes and materials, the rigid partners (planes, YADE Walls and Boxes) with theirs, and the options
-// of the pressure law. Indices into `bodies` and `partners` are the engine's; `id` is YADE's body id.
+// meshes and materials, the rigid-shaped partners (planes, YADE Walls, Boxes, Facets and Spheres) with
+// theirs, and the options of the pressure law. Indices into `bodies` and `partners` are the engine's; `id`
+// is YADE's body id.
 #pragma once
 
 #include <memory>
@@ -11,14 +12,21 @@
 #include "pkg/material/HertzMaterial.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/Box.hpp"
+#include "pkg/shape/Facet.hpp"
 #include "pkg/shape/Plane.hpp"
 #include "pkg/shape/RoundedMesh.hpp"
+#include "pkg/shape/Sphere.hpp"
 #include "pkg/shape/Wall.hpp"
 
 namespace roundedmesh {
 
-// A Plane is given in the global frame; a Wall or a Box is placed by its body's state.
-using PartnerShape = std::variant<Plane, Wall, Box>;
+// A Plane is given in the global frame; the others are placed by their body's state.
+using PartnerShape = std::variant<Plane, Wall, Box, Facet, Sphere>;
+
+// The deepest overlap a Hertz contact is meant to reach, as a fraction of the smaller body's volume-equivalent
+// radius: the margin of the triangle pair search (TriangleTree::queryPairs), within which every contact is
+// found, and the overlap of the time-step estimate (CriticalTimeStep.hpp).
+constexpr Real kDeepestOverlap = 0.1;
 
 struct RoundedBody {
   int id;

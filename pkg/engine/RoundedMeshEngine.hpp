@@ -1,25 +1,40 @@
 // One contact step (architecture.md, "One time step inside YADE"), as a sequence of stages:
-//   1. broad phase: each rounded body's bounding sphere against each partner;
-//   2. per overlapping pair, in the rounded body's frame:
-//      Ig2 (triangle contact geometry) -> Law2 (normal load, Eqs. 12-14) -> node forces (Eq. 15)
-//      -> wrench on the body (Eqs. 16-17) and the equal and opposite one on the partner;
-//   3. wrenches turned into the global frame and summed per body.
+//   1. broadPhase: the world boxes of bodies and partners swept along one axis -> data.pairs, each with a
+//      rounded body on its first side (partners never touch each other here);
+//   2. resolvePair for every pair, in parallel, in the rounded body's frame: Ig2 (triangle contact
+//      geometry) -> Law2 (normal load, Eqs. 12-14; friction, Eqs. 19-21) -> node forces (Eq. 15) and
+//      friction at c_eff -> the wrench on the body (Eqs. 16-17, 22-23) and the equal and opposite one on
+//      the other side -> data.pairResults;
+//   3. the pair wrenches summed per body in pair order, so the result is the same for any thread count.
 // Input: model, and data.bodyStates / data.partnerStates. Output: data.bodyWrenches,
 // data.partnerWrenches, data.statistics.
 #pragma once
 
+#include <vector>
+
 #include "pkg/engine/ContactData.hpp"
+#include "pkg/law/CoulombFriction.hpp"
 
 namespace roundedmesh {
 
 void RoundedMeshEngine(const ContactModel& model, ContactData& data);
 
-// Stage 1: can rounded body b touch partner p? Conservative: false only if no triangle's encompassing
-// sphere reaches the partner.
-bool boundsOverlap(const ContactModel& model, const ContactData& data, int b, int p);
+// Stage 1. Conservative: a pair is left out only if no triangle's cap of the body can reach the other.
+void broadPhase(const ContactModel& model, ContactData& data);
 
-// Stage 2 for one pair: the wrench on rounded body b (torque about its position) and on partner p
-// (torque about the partner's position), global frame.
-void resolvePair(const ContactModel& model, ContactData& data, int b, int p, Wrench& onBody, Wrench& onPartner);
+// One triangle contact as resolvePair saw it, in the global frame, for listings and pictures.
+struct TriangleContact {
+  PressureGeom geom;         // body 1's frame, as Ig2 made it
+  Vector3r point;            // c_eff [m]
+  Vector3r normal;           // n12
+  NormalLoad load;           // Fn [N] on body 2 along n12
+  TangentialLoad friction;   // F_t [N] on body 2, global frame
+  std::array<Real, 3> nodeForces;         // Eq. 15 on body 1's triangle corners, along -n12 [N]
+  std::array<Real, 3> partnerNodeForces;  // on body 2's triangle's corners, along n12, when it is a mesh
+};
+
+// Stage 2 for one pair. With `contacts`, also appends every triangle contact of the pair.
+PairResult resolvePair(const ContactModel& model, const ContactData& data, const BodyPair& pair,
+                       std::vector<PressureGeom>& scratch, std::vector<TriangleContact>* contacts = nullptr);
 
 }  // namespace roundedmesh

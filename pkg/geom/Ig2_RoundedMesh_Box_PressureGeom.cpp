@@ -27,8 +27,9 @@ void Ig2_RoundedMesh_Box_PressureGeom(const RoundedMesh& mesh, const Box& box, c
     }
   }
 
+  const AlignedBox3r boxInBodyFrame = transformedBox(AlignedBox3r(-box.halfExtents, box.halfExtents), orientation, centre);
   PressureGeom geom;
-  for (int t = 0; t < mesh.triangleCount(); ++t) {
+  mesh.tree().query([&](const AlignedBox3r& b) { return b.intersects(boxInBodyFrame); }, [&](int t) {
     const Vector3r local = orientation.transpose() * (mesh.rounded(t).sphereCentre - centre);
     int nearestFace = 0;
     Real nearestHeight = -std::numeric_limits<Real>::infinity();
@@ -45,7 +46,7 @@ void Ig2_RoundedMesh_Box_PressureGeom(const RoundedMesh& mesh, const Box& box, c
       }
     }
     if (!outside && trianglePlaneGeom(mesh, t, faces[nearestFace], motion, geom)) geoms.push_back(geom);
-  }
+  });
 }
 
 }  // namespace roundedmesh

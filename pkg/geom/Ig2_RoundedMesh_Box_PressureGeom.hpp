@@ -1,4 +1,5 @@
-// Ig2 functor: every triangle of a rounded body against the six finite faces of a box. A triangle meets
+// Ig2 functor: the triangles of a rounded body whose cap boxes meet the box, against its six finite faces.
+// A triangle meets
 // the faces whose outer side holds its encompassing sphere's centre (at most three); if the centre has
 // sunk into the box, the face it is least deep behind. Each such face is a plane with the projected
 // triangle clipped to the face's rectangle (Section 2.3, "finite plane").

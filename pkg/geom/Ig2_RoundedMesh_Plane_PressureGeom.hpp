@@ -1,5 +1,6 @@
-// Ig2 functor: every triangle of a rounded body against an infinite plane. Appends one PressureGeom per
-// triangle whose contact circle meets its projection (see trianglePlaneGeom).
+// Ig2 functor: the triangles of a rounded body against an infinite plane. Appends one PressureGeom per
+// triangle whose contact circle meets its projection (see trianglePlaneGeom); only triangles whose cap boxes
+// reach the plane are tested.
 // Inputs in body 1's frame: the plane, and the motion of the plane relative to body 1.
 #pragma once
 

@@ -11,6 +11,7 @@ namespace roundedmesh {
 
 struct PressureGeom {
   int triangle;                  // index of the triangle in body 1's mesh
+  int partnerTriangle = -1;      // index of the triangle in body 2's mesh; -1 if body 2 is not a mesh
   Vector3r centre;               // c [m]
   Vector3r normal;               // n12
   Vector3r tangent1, tangent2;   // t1, t2
@@ -19,9 +20,11 @@ struct PressureGeom {
   Real overlapRate;              // d(delta_s)/dt, positive while approaching [m/s]
   Real contactRadius;            // a = sqrt(delta_s R*) (Eq. 5) [m]
   ConvexPolygon polygon;         // S: the projected triangle(s), intersected (Fig. 2)
-  std::array<Vector2r, 3> nodes; // body 1's triangle corners projected on the plane, in mesh order
+  std::array<Vector2r, 3> nodes;         // body 1's triangle corners projected on the plane, in mesh order
+  std::array<Vector2r, 3> partnerNodes;  // body 2's, when body 2 is a mesh
   Vector2r effectivePoint;       // c_eff: the point of S closest to c
   Real effectiveOverlap;         // delta_eff (Eq. B.4) [m]
+  Vector3r slip;                 // tangential velocity of body 2 relative to body 1 at c_eff [m/s]
 };
 
 // Velocity of body 2's material relative to body 1's at a point x of body 1's frame: linear + angular x x.
@@ -30,5 +33,17 @@ struct RelativeMotion {
   Vector3r angular = Vector3r::Zero();
   Vector3r at(const Vector3r& x) const { return linear + angular.cross(x); }
 };
+
+// A point of the contact plane in body 1's frame.
+inline Vector3r planePoint(const PressureGeom& geom, const Vector2r& p) {
+  return geom.centre + p.x() * geom.tangent1 + p.y() * geom.tangent2;
+}
+
+// Fills overlapRate (at c) and slip (at c_eff) once the plane and c_eff are known.
+inline void setRelativeVelocity(PressureGeom& geom, const RelativeMotion& motion) {
+  geom.overlapRate = -geom.normal.dot(motion.at(geom.centre));
+  const Vector3r v = motion.at(planePoint(geom, geom.effectivePoint));
+  geom.slip = v - v.dot(geom.normal) * geom.normal;
+}
 
 }  // namespace roundedmesh

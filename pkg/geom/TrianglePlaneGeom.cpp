@@ -33,15 +33,16 @@ bool trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactFace&
   if (!(hSq < a * a)) return false;
 
   geom.triangle = triangle;
+  geom.partnerTriangle = -1;
   geom.centre = c;
   geom.normal = face.normal;
   geom.tangent1 = face.tangent1;
   geom.tangent2 = face.tangent2;
   geom.radius = R;
   geom.sphereOverlap = overlap;
-  geom.overlapRate = -face.normal.dot(motion.at(c));
   geom.contactRadius = a;
   geom.effectiveOverlap = overlap - R + std::sqrt(R * R - hSq);
+  setRelativeVelocity(geom, motion);
   return true;
 }
 

@@ -22,6 +22,8 @@ void HertzMaterial::validate() const {
   require(std::isfinite(density) && density > 0, "density", density, "positive and finite");
   require(std::isfinite(damping) && damping >= 0, "damping", damping, "non-negative and finite (seconds)");
   require(std::isfinite(friction) && friction >= 0, "friction", friction, "non-negative and finite");
+  require(std::isfinite(tangentialDamping) && tangentialDamping >= 0, "tangential_damping", tangentialDamping,
+          "non-negative and finite (N s/m)");
 }
 
 }  // namespace roundedmesh

@@ -1,6 +1,6 @@
 // Material of a body in Hertz contact (Section 2.2, Table 1): Young's modulus E [Pa] (infinity for a rigid
-// body), Poisson's ratio nu in (-1, 0.5), density [kg/m^3], normal damping constant A [s] of Eq. 7 and the
-// Coulomb friction coefficient mu.
+// body), Poisson's ratio nu in (-1, 0.5), density [kg/m^3], normal damping constant A [s] of Eq. 7, the
+// Coulomb friction coefficient mu and the tangential (viscous) damping constant c [N s/m] of Eqs. 18-21.
 #pragma once
 
 #include "pkg/common/Types.hpp"
@@ -13,6 +13,7 @@ struct HertzMaterial {
   Real density;
   Real damping = 0;
   Real friction = 0;
+  Real tangentialDamping = 0;
 
   // Throws std::invalid_argument naming the first parameter out of range.
   void validate() const;

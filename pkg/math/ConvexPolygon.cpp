@@ -29,7 +29,7 @@ ConvexPolygon ConvexPolygon::rectangle(const Vector2r& centre, Real hx, Real hy)
 }
 
 void ConvexPolygon::push(const Vector2r& p) {
-  if (size_ == kCapacity) throw std::logic_error("ConvexPolygon: more than 8 corners");
+  if (size_ == kCapacity) throw std::logic_error("ConvexPolygon: more than 10 corners");
   corners_[size_++] = p;
 }
 

@@ -1,6 +1,6 @@
 // A small convex polygon in a plane, counter-clockwise, stored inline (no allocation): the projected
 // triangles and their intersection polygon S of Section 2.3 / Appendix B. Clipping a triangle by a
-// rectangle gives at most 7 corners, by a triangle at most 6.
+// rectangle gives at most 7 corners, by a triangle at most 6, and S (at most 6) by a rectangle at most 10.
 #pragma once
 
 #include <array>
@@ -11,7 +11,7 @@ namespace roundedmesh {
 
 class ConvexPolygon {
  public:
-  static constexpr int kCapacity = 8;
+  static constexpr int kCapacity = 10;
 
   ConvexPolygon() = default;
   // A triangle in either orientation; stored counter-clockwise.

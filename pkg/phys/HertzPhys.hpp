@@ -1,5 +1,6 @@
 // IPhys of a Hertz contact between two materials (Ip2_HertzMaterial_HertzMaterial_HertzPhys):
 //   E* = ((1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j)^-1   (Eq. 3)      A = (A_i + A_j) / 2   (Eq. 7)
+//   mu = min(mu_i, mu_j)  (YADE's rule: a frictionless body stays frictionless)      c = (c_i + c_j) / 2
 // The combined radius R* (Eq. 3) belongs to each triangle pair and lives in PressureGeom.
 #pragma once
 
@@ -10,6 +11,10 @@ namespace roundedmesh {
 struct HertzPhys {
   Real effectiveModulus;  // E* [Pa]
   Real damping;           // A [s]
+  Real friction = 0;           // mu
+  Real tangentialDamping = 0;  // c [N s/m]
+
+  bool hasFriction() const { return friction > 0 || tangentialDamping > 0; }
 };
 
 HertzPhys Ip2_HertzMaterial_HertzMaterial_HertzPhys(const HertzMaterial& a, const HertzMaterial& b);

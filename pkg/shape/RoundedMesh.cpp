@@ -41,6 +41,7 @@ RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> t
     if (!vertices_[v].allFinite()) reject("vertices: vertex " + std::to_string(v) + " is not finite");
 
   rounded_.resize(triangles_.size());
+  std::vector<AlignedBox3r> boxes(triangles_.size());
   for (int t = 0; t < triangleCount(); ++t) {
     const Triangle& tri = triangles_[t];
     for (int corner : tri)
@@ -63,13 +64,19 @@ RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> t
     r.circumcentre = circumcentre(a, b, c);
     r.circumradius = (a - r.circumcentre).norm();
     r.radius = std::max(radii[t], r.circumradius);
-    r.sphereCentre =
-        r.circumcentre - std::sqrt(std::max(r.radius * r.radius - r.circumradius * r.circumradius, Real(0))) * r.normal;
+    const Real centreDepth = std::sqrt(std::max(r.radius * r.radius - r.circumradius * r.circumradius, Real(0)));
+    r.sphereCentre = r.circumcentre - centreDepth * r.normal;
+    r.capHeight = r.radius - centreDepth;
+    AlignedBox3r& box = boxes[t];
+    box.extend(a).extend(b).extend(c);
+    box.min().array() -= r.capHeight;
+    box.max().array() += r.capHeight;
     // Contact only ever involves the triangle's cap: the part of the sphere on the outer side of the
     // triangle's plane, which lies within the circumradius of the circumcentre (R >= circumradius).
     sphereBoundRadius_ = std::max(sphereBoundRadius_, std::min(r.sphereCentre.norm() + r.radius,
                                                                r.circumcentre.norm() + r.circumradius));
   }
+  tree_ = TriangleTree(std::move(boxes));
 }
 
 std::vector<Real> RoundedMesh::radii() const {

@@ -10,6 +10,7 @@
 #include <array>
 #include <vector>
 
+#include "pkg/bound/TriangleTree.hpp"
 #include "pkg/common/Types.hpp"
 
 namespace roundedmesh {
@@ -23,6 +24,7 @@ struct RoundedTriangle {
   Vector3r sphereCentre;  // centre of the encompassing sphere [m], body frame
   Vector3r circumcentre;  // centre of the circle through the corners [m], body frame
   Real circumradius;      // its radius [m]; the triangle lies inside that circle
+  Real capHeight;         // height of the sphere's cap over that circle, R - sqrt(R^2 - rho^2) [m]
 };
 
 class RoundedMesh {
@@ -39,6 +41,8 @@ class RoundedMesh {
   // encompassing sphere beyond the triangle's plane, where all contact pressure acts): no partner outside
   // it can touch the body. Bounded even for the huge radii of nearly flat triangles.
   Real sphereBoundRadius() const { return sphereBoundRadius_; }
+  // The hierarchy of the triangles' cap boxes (TriangleTree.hpp), body frame.
+  const TriangleTree& tree() const { return tree_; }
   // The same mesh moved rigidly: x -> rotation * x + translation.
   RoundedMesh transformed(const Matrix3r& rotation, const Vector3r& translation) const;
 
@@ -47,6 +51,7 @@ class RoundedMesh {
   std::vector<Triangle> triangles_;
   std::vector<RoundedTriangle> rounded_;
   Real sphereBoundRadius_ = 0;
+  TriangleTree tree_;
 };
 
 }  // namespace roundedmesh

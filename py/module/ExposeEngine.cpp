@@ -1,5 +1,5 @@
-// The contact engine as the Python package drives it (roundedmesh/scene.py), and plane_contact, the same
-// pipeline evaluated once without a YADE scene.
+// The contact engine as the Python package drives it (roundedmesh/scene.py), and plane_contact,
+// sphere_contact and body_contact: the same pipeline evaluated once for one pair, without a YADE scene.
 #include <boost/python.hpp>
 #include <cmath>
 #include <stdexcept>
@@ -58,13 +58,15 @@ class Engine {
     return missing;
   }
 
-  // (time step [s], YADE id of the body, YADE id of the partner) of the most restrictive pair, for the
+  // (time step [s], YADE id of the body, YADE id of the other body) of the most restrictive pair, for the
   // masses the bodies have in YADE now (a partner's mass 0 if it does not move under forces).
   bp::tuple stabilityLimit(const bp::object& bodyMasses, const bp::object& partnerMasses) const {
     const StabilityLimit limit = roundedmesh::stabilityLimit(model_, toReals(bodyMasses, model_.bodies.size()),
                                                              toReals(partnerMasses, model_.partners.size()));
     if (limit.body < 0) return bp::make_tuple(limit.timeStep, -1, -1);
-    return bp::make_tuple(limit.timeStep, model_.bodies[limit.body].id, model_.partners[limit.partner].id);
+    const int bodyCount = static_cast<int>(model_.bodies.size());
+    const int other = limit.other < bodyCount ? model_.bodies[limit.other].id : model_.partners[limit.other - bodyCount].id;
+    return bp::make_tuple(limit.timeStep, model_.bodies[limit.body].id, other);
   }
 
   bp::dict statistics() const {
@@ -72,6 +74,7 @@ class Engine {
     s["body_pairs"] = data_.statistics.bodyPairs;
     s["quadrature_contacts"] = data_.statistics.quadratureContacts;
     s["direct_contacts"] = data_.statistics.directContacts;
+    s["sliding_contacts"] = data_.statistics.slidingContacts;
     return s;
   }
 
@@ -80,32 +83,112 @@ class Engine {
   ContactData data_;
 };
 
+void requireFinite(const Vector3r& v, const char* name) {
+  if (!v.allFinite()) throw std::invalid_argument(std::string(name) + " must be finite");
+}
+
+Quaternionr rotation(const Quaternionr& q, const char* name) {
+  if (!q.coeffs().allFinite() || q.norm() == 0) throw std::invalid_argument(std::string(name) + " must be a finite rotation");
+  return q.normalized();
+}
+
+BodyState bodyState(const Vector3r& pos, const Quaternionr& ori, const Vector3r& vel, const Vector3r& angVel,
+                    int index) {
+  const std::string suffix = index ? std::to_string(index) : "";
+  requireFinite(pos, ("pos" + suffix).c_str());
+  requireFinite(vel, ("vel" + suffix).c_str());
+  requireFinite(angVel, ("ang_vel" + suffix).c_str());
+  return {pos, rotation(ori, ("ori" + suffix).c_str()), vel, angVel};
+}
+
+bp::dict describe(const TriangleContact& c) {
+  bp::dict d;
+  d["triangle1"] = c.geom.triangle;
+  d["triangle2"] = c.geom.partnerTriangle;
+  d["sphere_overlap"] = c.geom.sphereOverlap;
+  d["effective_overlap"] = c.geom.effectiveOverlap;
+  d["radius"] = c.geom.radius;
+  d["contact_radius"] = c.geom.contactRadius;
+  d["point"] = c.point;
+  d["normal"] = c.normal;
+  d["regime"] = c.load.regime == Regime::Direct ? "direct" : "quadrature";
+  d["normal_force"] = c.load.force;
+  d["tangential_force"] = c.friction.force;
+  d["sliding"] = c.friction.sliding;
+  d["node_forces1"] = bp::make_tuple(c.nodeForces[0], c.nodeForces[1], c.nodeForces[2]);
+  if (c.geom.partnerTriangle >= 0)
+    d["node_forces2"] = bp::make_tuple(c.partnerNodeForces[0], c.partnerNodeForces[1], c.partnerNodeForces[2]);
+  return d;
+}
+
+// Body 0 of `model` against its second entity (body 1, or partner 0), once: (F1, T1, F2, T2, contacts), the
+// torques about each one's position, and a dict per triangle contact when `details`.
+bp::tuple evaluatePair(ContactModel& model, ContactData& data, Real gamma, const std::string& regime, bool details) {
+  model.pressure = pressureOptions(gamma, regime);
+  for (const RoundedBody& body : model.bodies) body.material.validate();
+  for (const Partner& partner : model.partners) partner.material.validate();
+  std::vector<TriangleContact> contacts;
+  std::vector<PressureGeom> scratch;
+  const PairResult r = resolvePair(model, data, {0, 1}, scratch, details ? &contacts : nullptr);
+  bp::list listed;
+  for (const TriangleContact& c : contacts) listed.append(describe(c));
+  return bp::make_tuple(r.onBody.force, r.onBody.torque, r.onOther.force, r.onOther.torque, listed);
+}
+
 bp::tuple planeContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& planePoint,
                        const Vector3r& planeNormal, const HertzMaterial& meshMaterial,
                        const HertzMaterial& planeMaterial, const Vector3r& vel, const Vector3r& angVel, Real gamma,
                        const std::string& regime) {
-  for (const auto& [name, v] : {std::pair{"pos", pos}, {"plane_point", planePoint}, {"plane_normal", planeNormal},
-                                {"vel", vel}, {"ang_vel", angVel}})
-    if (!v.allFinite()) throw std::invalid_argument(std::string(name) + " must be finite");
-  if (!ori.coeffs().allFinite() || ori.norm() == 0) throw std::invalid_argument("ori must be a finite rotation");
+  requireFinite(planePoint, "plane_point");
+  requireFinite(planeNormal, "plane_normal");
   if (planeNormal.norm() == 0) throw std::invalid_argument("plane_normal must not be zero");
-  meshMaterial.validate();
-  planeMaterial.validate();
-
   ContactModel model;
   model.bodies.push_back(roundedBody(0, mesh, meshMaterial));
   model.partners.push_back({1, Plane{planePoint, planeNormal.normalized()}, planeMaterial});
-  model.pressure = pressureOptions(gamma, regime);
   ContactData data;
   data.resize(model);
-  data.bodyStates[0] = {pos, ori.normalized(), vel, angVel};
-  RoundedMeshEngine(model, data);
-  return bp::make_tuple(data.bodyWrenches[0].force, data.bodyWrenches[0].torque);
+  data.bodyStates[0] = bodyState(pos, ori, vel, angVel, 0);
+  const bp::tuple all = evaluatePair(model, data, gamma, regime, false);
+  return bp::make_tuple(all[0], all[1]);
+}
+
+bp::tuple sphereContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& centre,
+                        Real radius, const HertzMaterial& meshMaterial, const HertzMaterial& sphereMaterial,
+                        const Vector3r& vel, const Vector3r& angVel, const Vector3r& sphereVel,
+                        const Vector3r& sphereAngVel, Real gamma, const std::string& regime, bool details) {
+  requireFinite(centre, "centre");
+  if (!(std::isfinite(radius) && radius > 0))
+    throw std::invalid_argument("radius must be positive and finite, got " + std::to_string(radius));
+  ContactModel model;
+  model.bodies.push_back(roundedBody(0, mesh, meshMaterial));
+  model.partners.push_back({1, Sphere{radius}, sphereMaterial});
+  ContactData data;
+  data.resize(model);
+  data.bodyStates[0] = bodyState(pos, ori, vel, angVel, 0);
+  data.partnerStates[0] = bodyState(centre, Quaternionr::Identity(), sphereVel, sphereAngVel, 2);
+  return evaluatePair(model, data, gamma, regime, details);
+}
+
+bp::tuple bodyContact(const BodyMesh& mesh1, const Vector3r& pos1, const Quaternionr& ori1, const BodyMesh& mesh2,
+                      const Vector3r& pos2, const Quaternionr& ori2, const HertzMaterial& material1,
+                      const HertzMaterial& material2, const Vector3r& vel1, const Vector3r& angVel1,
+                      const Vector3r& vel2, const Vector3r& angVel2, Real gamma, const std::string& regime,
+                      bool details) {
+  ContactModel model;
+  model.bodies.push_back(roundedBody(0, mesh1, material1));
+  model.bodies.push_back(roundedBody(1, mesh2, material2));
+  ContactData data;
+  data.resize(model);
+  data.bodyStates[0] = bodyState(pos1, ori1, vel1, angVel1, 1);
+  data.bodyStates[1] = bodyState(pos2, ori2, vel2, angVel2, 2);
+  return evaluatePair(model, data, gamma, regime, details);
 }
 
 const char* partnerKindName(const Plane&) { return "Plane"; }
 const char* partnerKindName(const Wall&) { return "Wall"; }
 const char* partnerKindName(const Box&) { return "Box"; }
+const char* partnerKindName(const Facet&) { return "Facet"; }
+const char* partnerKindName(const Sphere&) { return "Sphere"; }
 
 }  // namespace
 
@@ -121,7 +204,8 @@ void exposeEngine() {
   bp::def("partner_kind", +[](const bp::object& body) {
             const int id = bp::extract<int>(body.attr("id"));
             return std::visit([](const auto& shape) { return partnerKindName(shape); }, yadeShape(body, id));
-          }, bp::arg("body"), "'Wall' or 'Box' for a body that can be a contact partner; ValueError otherwise.");
+          }, bp::arg("body"),
+          "'Wall', 'Box', 'Facet' or 'Sphere' for a body that can be a contact partner; ValueError otherwise.");
 
   bp::def("plane_contact", &planeContact,
           (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("plane_point"), bp::arg("plane_normal"),
@@ -130,6 +214,20 @@ void exposeEngine() {
           "(force, torque) on a rounded body at pos, ori, moving with vel, ang_vel, pressed against the fixed\n"
           "plane through plane_point with plane_normal pointing toward the body side. Torque is about pos.\n"
           "gamma and regime ('auto', 'quadrature', 'direct') select the pressure integration (Eq. 14).");
+
+  const Vector3r zero = Vector3r::Zero();
+  bp::def("_sphere_contact", &sphereContact,
+          (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("centre"), bp::arg("radius"),
+           bp::arg("mesh_material"), bp::arg("sphere_material"), bp::arg("vel") = zero, bp::arg("ang_vel") = zero,
+           bp::arg("sphere_vel") = zero, bp::arg("sphere_ang_vel") = zero, bp::arg("gamma") = 10.0,
+           bp::arg("regime") = "auto", bp::arg("details") = false),
+          "(F1, T1, F2, T2, contacts): see roundedmesh.sphere_contact.");
+  bp::def("_body_contact", &bodyContact,
+          (bp::arg("mesh1"), bp::arg("pos1"), bp::arg("ori1"), bp::arg("mesh2"), bp::arg("pos2"), bp::arg("ori2"),
+           bp::arg("material1"), bp::arg("material2"), bp::arg("vel1") = zero, bp::arg("ang_vel1") = zero,
+           bp::arg("vel2") = zero, bp::arg("ang_vel2") = zero, bp::arg("gamma") = 10.0, bp::arg("regime") = "auto",
+           bp::arg("details") = false),
+          "(F1, T1, F2, T2, contacts): see roundedmesh.body_contact.");
 }
 
 }  // namespace roundedmesh::python

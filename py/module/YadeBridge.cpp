@@ -31,8 +31,13 @@ PartnerShape yadeShape(const bp::object& body, int id) {
   const std::string kind = shape.is_none() ? "no shape" : bp::extract<std::string>(shape.attr("__class__").attr("__name__"))();
   if (kind == "Wall") return Wall{bp::extract<int>(shape.attr("axis")), bp::extract<int>(shape.attr("sense"))};
   if (kind == "Box") return Box{bp::extract<Vector3r>(shape.attr("extents"))};
+  if (kind == "Sphere") return Sphere{bp::extract<Real>(shape.attr("radius"))};
+  if (kind == "Facet") {
+    const bp::object v = shape.attr("vertices");
+    return Facet{{bp::extract<Vector3r>(v[0])(), bp::extract<Vector3r>(v[1])(), bp::extract<Vector3r>(v[2])()}};
+  }
   throw std::invalid_argument("body " + std::to_string(id) + ": a " + kind +
-                              " cannot be a roundedmesh contact partner; Walls and Boxes can");
+                              " cannot be a roundedmesh contact partner; Walls, Boxes, Facets and Spheres can");
 }
 
 std::vector<int> readScene(const bp::object& omega, ContactModel& model, ContactData& data) {

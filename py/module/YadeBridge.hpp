@@ -20,7 +20,8 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
 // Adds every non-zero wrench of `data` to YADE's force container (O.forces.addF / addT).
 void applyWrenches(const bp::object& omega, const ContactModel& model, const ContactData& data);
 
-// The partner's shape as YADE has it now: a Wall or a Box. Throws std::invalid_argument for any other.
+// The partner's shape as YADE has it now: a Wall, Box, Facet or Sphere. Throws std::invalid_argument for any
+// other.
 PartnerShape yadeShape(const bp::object& body, int id);
 
 }  // namespace roundedmesh::python

@@ -13,6 +13,7 @@ See doc/user-guide.md.
 """
 from . import _yade  # noqa: F401  (YADE's converters must exist before _core returns vectors)
 from ._core import HertzMaterial, Mesh, plane_contact
+from .contact import body_contact, sphere_contact, triangle_contacts
 from .scene import _restore_mesh  # noqa: F401  (Mesh.__reduce__ names it as roundedmesh._restore_mesh)
 from .scene import add_body, assign_material, critical_timestep, engine, rounded_bodies, statistics
 from .shapes import reference_shape
@@ -20,4 +21,4 @@ from .shapes import reference_shape
 Mesh.reference_shape = staticmethod(reference_shape)
 
 __all__ = ["Mesh", "HertzMaterial", "add_body", "assign_material", "engine", "critical_timestep", "statistics",
-           "rounded_bodies", "plane_contact"]
+           "rounded_bodies", "plane_contact", "body_contact", "sphere_contact", "triangle_contacts"]

@@ -1,9 +1,10 @@
 """Rounded bodies in a YADE scene: creating them, naming their contact partners, and the engine that
 adds their contact forces each step.
 
-A rounded body is an ordinary YADE Body without a shape: YADE owns its mass, inertia, position,
-orientation and velocities and moves it with NewtonIntegrator; this module owns its mesh and material.
-YADE Walls and Boxes become contact partners when given a HertzMaterial with assign_material.
+A rounded body is an ordinary YADE Body with a bare Shape that YADE's own engines ignore: YADE owns its mass, inertia, position,
+orientation and velocities and moves it with NewtonIntegrator (also as a member of a clump); this module
+owns its mesh and material. YADE Walls, Boxes, Facets and Spheres become contact partners when given a
+HertzMaterial with assign_material.
 
 What this module knows about a scene is kept in the scene, in O.tags, so that O.save/O.load,
 O.saveTmp/O.loadTmp and the GUI's reload keep the rounded bodies:
@@ -23,7 +24,7 @@ import warnings
 import weakref
 
 import numpy as np
-from yade import Body, ForceResetter, NewtonIntegrator, O, PyRunner
+from yade import Body, ForceResetter, Material, NewtonIntegrator, O, PyRunner, Shape
 from yade.minieigenHP import Quaternion, Vector3
 
 from ._core import Engine, HertzMaterial, Mesh, partner_kind
@@ -56,7 +57,8 @@ def _new_revision():
 
 
 def _material_record(material):
-    return [material.young, material.poisson, material.density, material.damping, material.friction]
+    return [material.young, material.poisson, material.density, material.damping, material.friction,
+            material.tangential_damping]
 
 
 def _encode(array, dtype):
@@ -174,9 +176,9 @@ def _materials(kind):
 
 def _require_one_deformable(material, others, name, other_kind):
     """Two rigid bodies (young = inf) have no Hertz contact: refuse a rigid material if a rigid one is
-    already on the other side."""
+    already among those it can touch (`others`: 'body', 'partner' or both)."""
     if math.isinf(material.young):
-        rigid = sorted(i for i, m in _materials(others).items() if math.isinf(m.young))
+        rigid = sorted(i for kind in others for i, m in _materials(kind).items() if math.isinf(m.young))
         if rigid:
             raise ValueError(f"{name}: a rigid material (young=inf) cannot touch the rigid {other_kind} "
                              f"{', '.join(map(str, rigid))}; give one side a finite modulus")
@@ -193,9 +195,13 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None):
     pos = _finite_vector(pos, "pos")
     ori = _rotation(ori, "ori")
     material = _require_material(material, "material")
-    _require_one_deformable(material, "partner", "material", "partner(s)")
+    _require_one_deformable(material, ("body", "partner"), "material", "bod(ies)")
 
     body = Body()
+    # A bare Shape and Material: YADE's collider has no bound for the one and ignores the body, while
+    # O.bodies.clump needs both to take the body as a member (it then uses the state's mass and inertia).
+    body.shape = Shape()
+    body.material = Material(density=material.density, label="roundedmesh")
     body.aspherical = True
     body.state.mass = material.density * mesh.volume
     body.state.inertia = Vector3(*(material.density * mesh.inertia))
@@ -209,14 +215,15 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None):
 
 
 def assign_material(body_id, material):
-    """Makes the YADE-native body `body_id` (a Wall or a Box) a contact partner of the rounded bodies, made of
-    `material`. Assigning again replaces the material."""
+    """Makes the YADE-native body `body_id` (a Wall, Box, Facet or Sphere) a contact partner of the rounded
+    bodies, made of `material`. Assigning again replaces the material. Partners touch rounded bodies only:
+    contacts among them stay with YADE's own engines, if the scene has any."""
     material = _require_material(material, "material")
     body = _existing_body(body_id, "body_id")
     if _tag(f"body.{body.id}"):
         raise ValueError(f"body_id: body {body.id} is a rounded body; its material is the one given to add_body")
     partner_kind(body)
-    _require_one_deformable(material, "body", "material", "rounded bod(ies)")
+    _require_one_deformable(material, ("body",), "material", "rounded bod(ies)")
     _set_tag(f"partner.{body.id}", json.dumps(_material_record(material)))
     _new_revision()
 
@@ -250,10 +257,11 @@ def critical_timestep():
 
 
 def statistics():
-    """Counts of the last contact step: body pairs whose bounds overlapped, and triangle contacts in the
-    quadrature and direct regimes."""
+    """Counts of the last contact step: body pairs whose bounds overlapped, triangle contacts in the
+    quadrature and direct regimes, and triangle contacts sliding (Eq. 21)."""
     state = _current_state()
-    return state.engine.statistics if state else {"body_pairs": 0, "quadrature_contacts": 0, "direct_contacts": 0}
+    return state.engine.statistics if state else {"body_pairs": 0, "quadrature_contacts": 0, "direct_contacts": 0,
+                                                  "sliding_contacts": 0}
 
 
 def rounded_bodies():
@@ -285,13 +293,17 @@ class _SceneState:
                 materials.append(HertzMaterial(*json.loads(record)))
                 self.engine.add_partner(body, materials[-1])
                 self.partner_ids.append(int(body_id))
-        if any(m.friction > 0 for m in materials):
-            warnings.warn("roundedmesh: friction is not modelled yet; contacts are frictionless", RuntimeWarning)
+        for m in materials:
+            if m.friction > 0 and m.tangential_damping == 0 and not any(o.tangential_damping > 0 for o in materials):
+                warnings.warn(f"roundedmesh: friction={m.friction:g} with tangential_damping=0 on every material: "
+                              "Eq. 21 lets no contact slide and the no-slip force is zero, so there is no friction; "
+                              "give a tangential damping c (doc/physics.md)", RuntimeWarning)
+                break
         self.options = None
         self.checked_dt = None
 
     def stability(self):
-        """(limit [s], body id, partner id) for the masses the bodies have in YADE now. A body erased since
+        """(limit [s], body id, id of the other body) for the masses the bodies have in YADE now. A body erased since
         the last step (the next step forgets it) is left out: infinite mass puts no limit."""
         bodies = [_body_or_none(i) for i in self.body_ids]
         partners = [_body_or_none(i) for i in self.partner_ids]
@@ -304,11 +316,11 @@ class _SceneState:
             self.options = options
         _check_engines()
         if O.dt != self.checked_dt:
-            limit, body, partner = self.stability()
+            limit, body, other = self.stability()
             if O.dt > limit:
                 raise ValueError(
                     f"O.dt = {O.dt:g} s is above the stability limit {limit:g} s of the contact between rounded "
-                    f"body {body} and body {partner} (roundedmesh.critical_timestep()); reduce O.dt")
+                    f"body {body} and body {other} (roundedmesh.critical_timestep()); reduce O.dt")
             self.checked_dt = O.dt
 
 

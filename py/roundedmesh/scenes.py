@@ -6,17 +6,19 @@ S2 -- static indentation of a meshed sphere against a rigid plane:
     static_indentation(mesh, overlaps, material, orientation) -> forces [N]
 S3 -- a meshed sphere dropped on a YADE Wall under gravity with normal damping:
     S3 (the parameters), build_bouncing_sphere(subdivisions) -> body id, trace_height(...)
+S4 -- a meshed sphere resting on a YADE Wall, pushed sideways by a force rising past mu m g:
+    S4 (the parameters), friction_ramp(subdivisions) -> applied and friction forces over time
 """
 import math
 from dataclasses import dataclass
 
 import numpy as np
-from yade import ForceResetter, NewtonIntegrator, O, utils
+from yade import ForceResetter, NewtonIntegrator, O, PyRunner, utils
 from yade.minieigenHP import Quaternion
 
 from . import progress
 from ._core import HertzMaterial, Mesh, plane_contact
-from .scene import add_body, assign_material, engine
+from .scene import add_body, assign_material, engine, statistics
 
 RIGID = HertzMaterial(young=math.inf, poisson=0.0, density=1.0)
 
@@ -87,3 +89,68 @@ def trace_height(body_id, duration, label=None):
         if reporter:
             reporter.update(i)
     return times, heights
+
+
+@dataclass(frozen=True)
+class FrictionRamp:
+    """Scene S4 (ours where scenes.md is silent): S1's particle resting on a Wall under gravity, its rotations
+    blocked so that it can only slide (the Coulomb law of Eq. 18 is the one of a sliding block), pushed along
+    x at its centre by a force rising linearly from 0 to 1.5 mu m g. The tangential damping c makes the slip
+    at the onset of sliding mu m g / c = 6 mm/s, and the ramp is slow enough that inertia (m dv/dt) stays
+    below 1 % of mu m g before sliding."""
+    radius: float = 0.025           # [m]
+    gravity: float = 9.81           # [m/s^2]
+    friction: float = 0.5
+    ramp_time: float = 0.3          # [s] to reach 1.5 mu m g
+    settle_time: float = 0.1        # [s] at rest before the ramp (10 decay times of the bounce)
+    timestep: float = 2e-4          # [s]: omega dt = 0.04 for the resting contact, c dt / m = 0.15
+    particle: HertzMaterial = HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-2, friction=0.5,
+                                            tangential_damping=100.0)
+    wall: HertzMaterial = HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=1e-2, friction=0.5,
+                                        tangential_damping=100.0)
+
+
+S4 = FrictionRamp()
+
+
+def friction_ramp(subdivisions, scene=S4, label=None):
+    """Runs S4 with an icosphere of `subdivisions` (2, 3: 162, 642 nodes). Returns a dict of arrays over the
+    ramp's steps: time [s], applied force F_A [N], friction force F_t on the sphere (x component of the
+    contact force, opposing F_A) [N], sphere displacement along x [m], sliding triangle contacts, and
+    f_max = mu m g [N]."""
+    O.reset()
+    mesh = Mesh.icosphere(scene.radius, subdivisions)
+    mass = scene.particle.density * mesh.volume
+    modulus = 1 / sum((1 - m.poisson ** 2) / m.young for m in (scene.particle, scene.wall))
+    rest = (3 * mass * scene.gravity / (4 * modulus * math.sqrt(scene.radius))) ** (2 / 3)  # Hertz, Eq. 6
+    sphere = add_body(mesh, pos=(0, 0, scene.radius - rest), material=scene.particle)
+    O.bodies[sphere].state.blockedDOFs = "XYZ"
+    wall = O.bodies.append(utils.wall(0, axis=2, sense=1))
+    assign_material(wall, scene.wall)
+    f_max = scene.friction * mass * scene.gravity
+    push = PyRunner(command=f"O.forces.addF({sphere}, (_rm_push(), 0, 0))", iterPeriod=1, initRun=True)
+    O.engines = [ForceResetter(), engine(), push, NewtonIntegrator(gravity=(0, 0, -scene.gravity), damping=0)]
+    O.dt = scene.timestep
+    start = scene.settle_time
+    rate = 1.5 * f_max / scene.ramp_time
+    import builtins
+    builtins._rm_push = lambda: max(O.time - start, 0.0) * rate
+    settle = int(round(scene.settle_time / O.dt))
+    O.run(settle, True)
+    steps = int(round(scene.ramp_time / O.dt))
+    out = {k: np.empty(steps) for k in ("time", "applied", "friction", "displacement", "sliding")}
+    reporter = progress.Progress(steps, label) if label else None
+    x0 = O.bodies[sphere].state.pos[0]
+    for i in range(steps):
+        applied = builtins._rm_push()
+        O.step()
+        out["time"][i] = O.time
+        out["applied"][i] = applied
+        out["friction"][i] = -O.forces.f(wall)[0]  # on the sphere: the opposite of what the wall receives
+        out["displacement"][i] = O.bodies[sphere].state.pos[0] - x0
+        out["sliding"][i] = statistics()["sliding_contacts"]
+        if reporter:
+            reporter.update(i + 1)
+    del builtins._rm_push
+    out["f_max"] = f_max
+    return out

@@ -4,7 +4,7 @@ import pickle
 
 import numpy as np
 import pytest
-from yade import ForceResetter, NewtonIntegrator, O, utils
+from yade import ForceResetter, NewtonIntegrator, O, PolyhedraMat, polyhedra_utils, utils
 from yade.minieigenHP import Quaternion
 
 import roundedmesh as rm
@@ -98,15 +98,15 @@ def test_radius_errors_name_the_argument():
 
 def test_assign_material_checks_the_body_and_the_material():
     sphere_id = rm.add_body(rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 1), material=RUBBER)
-    yade_sphere = O.bodies.append(utils.sphere((1, 0, 0), 0.1))
+    polyhedron = O.bodies.append(polyhedra_utils.polyhedra(PolyhedraMat(), size=(0.1, 0.1, 0.1)))
     wall = O.bodies.append(utils.wall(0, axis=2))
     before = scene_snapshot()
     with pytest.raises(ValueError, match="body_id: there is no body 99"):
         rm.assign_material(99, RUBBER)
     with pytest.raises(TypeError, match="material"):
         rm.assign_material(wall, None)
-    with pytest.raises(ValueError, match=f"body {yade_sphere}: a Sphere cannot be"):
-        rm.assign_material(yade_sphere, RUBBER)
+    with pytest.raises(ValueError, match=f"body {polyhedron}: a Polyhedra cannot be"):
+        rm.assign_material(polyhedron, RUBBER)
     with pytest.raises(ValueError, match=f"body {sphere_id} is a rounded body"):
         rm.assign_material(sphere_id, RUBBER)
     for not_an_id in (True, -1, 1.0, "1"):
@@ -129,8 +129,15 @@ def test_two_rigid_bodies_cannot_be_partners():
     rigid_wall = O.bodies.append(utils.wall(0, axis=2))
     rm.assign_material(rigid_wall, rigid)
     before = scene_snapshot()
-    with pytest.raises(ValueError, match=f"rigid partner\\(s\\) {rigid_wall}"):
+    with pytest.raises(ValueError, match=f"rigid bod\\(ies\\) {rigid_wall}"):
         rm.add_body(rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 1), material=rigid)
+    assert scene_snapshot() == before
+
+    O.reset()
+    first = rm.add_body(rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 1), material=rigid)
+    before = scene_snapshot()
+    with pytest.raises(ValueError, match=f"rigid bod\\(ies\\) {first}"):
+        rm.add_body(rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 2), material=rigid)
     assert scene_snapshot() == before
 
 
@@ -206,12 +213,14 @@ def test_engines_edited_during_a_run(edit, message):
         O.run(3, True)
 
 
-def test_friction_is_announced_as_not_modelled():
+# Eq. 21 never lets a contact slide without tangential damping, and the no-slip force is then zero: friction
+# without c does nothing, which the user hears about once.
+def test_friction_without_tangential_damping_is_announced():
     bouncing_sphere_scene()
     rm.assign_material(1, rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, friction=0.5))
     O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(damping=0)]
     O.dt = 1e-5
-    with pytest.warns(RuntimeWarning, match="friction is not modelled yet"):
+    with pytest.warns(RuntimeWarning, match="friction=0.5 .* tangential_damping=0 .* no friction"):
         O.step()
 
 

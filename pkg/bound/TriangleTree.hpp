@@ -1,0 +1,114 @@
+// Bound: a static bounding-volume hierarchy over the triangles of one mesh, built once in the body frame
+// (architecture.md). Triangle t's box holds its corners and its cap, the part of its encompassing sphere
+// beyond the triangle's plane where contact pressure acts: the corners' box inflated on every side by the
+// cap height R - sqrt(R^2 - rho^2) (rho the circumradius). A node's box holds its children's.
+// Queries never allocate: traversal runs on a fixed stack (the median split keeps the depth at log2(n)).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "pkg/common/Types.hpp"
+
+namespace roundedmesh {
+
+using AlignedBox3r = Eigen::AlignedBox<Real, 3>;
+
+class TriangleTree {
+ public:
+  struct Node {
+    AlignedBox3r box;
+    int first;  // leaf: first index into order(); inner: index of the left child (the right one follows it)
+    int count;  // leaf: number of triangles (> 0); inner: 0
+  };
+
+  TriangleTree() = default;
+  // boxes[t]: the box of triangle t.
+  explicit TriangleTree(std::vector<AlignedBox3r> boxes);
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+  const AlignedBox3r& triangleBox(int t) const { return boxes_[t]; }
+
+  // Calls visit(t) for every triangle t whose box passes `test` (a predicate on an AlignedBox3r that must hold
+  // for every box containing one that passes: it is applied to nodes before their triangles).
+  template <class BoxTest, class Visit>
+  void query(const BoxTest& test, const Visit& visit) const;
+
+  // Calls visit(s, t) for every triangle s of `a` and t of `b` whose boxes come closer than `margin` on every
+  // axis when b's frame is placed in a's by x_a = rotation * x_b + translation (b's boxes taken as the
+  // axis-aligned boxes of their rotated images, which contain them). The margin is the deepest overlap to be
+  // found: two caps that have sunk into each other by d have boxes up to d apart.
+  template <class Visit>
+  static void queryPairs(const TriangleTree& a, const TriangleTree& b, const Matrix3r& rotation,
+                         const Vector3r& translation, Real margin, const Visit& visit);
+
+ private:
+  static constexpr int kStackSize = 128;
+  void build(int self, int first, int count);
+
+  std::vector<AlignedBox3r> boxes_;
+  std::vector<int> order_;  // triangle indices, grouped by leaf
+  std::vector<Node> nodes_;
+};
+
+// The axis-aligned box of `box` rotated and translated: centre R c + t, half-sizes |R| h, grown by margin.
+inline AlignedBox3r transformedBox(const AlignedBox3r& box, const Matrix3r& rotation, const Vector3r& translation,
+                                   Real margin = 0) {
+  const Vector3r centre = rotation * box.center() + translation;
+  const Vector3r half = (rotation.cwiseAbs() * (0.5 * box.sizes())).array() + margin;
+  return AlignedBox3r(centre - half, centre + half);
+}
+
+template <class BoxTest, class Visit>
+void TriangleTree::query(const BoxTest& test, const Visit& visit) const {
+  if (nodes_.empty()) return;
+  std::array<int, kStackSize> stack;
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!test(node.box)) continue;
+    if (node.count > 0) {
+      for (int i = node.first; i < node.first + node.count; ++i)
+        if (test(boxes_[order_[i]])) visit(order_[i]);
+    } else {
+      stack[top++] = node.first;
+      stack[top++] = node.first + 1;
+    }
+  }
+}
+
+template <class Visit>
+void TriangleTree::queryPairs(const TriangleTree& a, const TriangleTree& b, const Matrix3r& rotation,
+                              const Vector3r& translation, Real margin, const Visit& visit) {
+  if (a.nodes_.empty() || b.nodes_.empty()) return;
+  std::array<std::array<int, 2>, kStackSize> stack;
+  int top = 0;
+  stack[top++] = {0, 0};
+  while (top > 0) {
+    const auto [i, j] = stack[--top];
+    const Node& na = a.nodes_[i];
+    const Node& nb = b.nodes_[j];
+    const AlignedBox3r boxB = transformedBox(nb.box, rotation, translation, margin);
+    if (!na.box.intersects(boxB)) continue;
+    if (na.count > 0 && nb.count > 0) {
+      for (int q = nb.first; q < nb.first + nb.count; ++q) {
+        const int t = b.order_[q];
+        const AlignedBox3r triangleB = transformedBox(b.boxes_[t], rotation, translation, margin);
+        for (int p = na.first; p < na.first + na.count; ++p)
+          if (a.boxes_[a.order_[p]].intersects(triangleB)) visit(a.order_[p], t);
+      }
+    } else if (nb.count > 0 || (na.count == 0 && na.box.sizes().squaredNorm() >= nb.box.sizes().squaredNorm())) {
+      // Descend the larger of two inner nodes, or the only inner one.
+      stack[top++] = {na.first, j};
+      stack[top++] = {na.first + 1, j};
+    } else {
+      stack[top++] = {i, nb.first};
+      stack[top++] = {i, nb.first + 1};
+    }
+  }
+}
+
+}  // namespace roundedmesh

@@ -1,0 +1,30 @@
+#include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
+
+namespace roundedmesh {
+
+void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::array<Vector3r, 3>& corners, Real margin,
+                                        const RelativeMotion& motion, std::vector<PressureGeom>& geoms) {
+  const Vector3r normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
+  ContactFace face;
+  face.origin = corners[0];
+  // n12 points from the body (its centre is body 1's origin) into the facet.
+  face.normal = normal.dot(corners[0]) > 0 ? normal : Vector3r(-normal);
+  face.tangent1 = face.normal.unitOrthogonal();
+  face.tangent2 = face.normal.cross(face.tangent1);
+  auto inFace = [&](const Vector3r& x) {
+    return Vector2r((x - face.origin).dot(face.tangent1), (x - face.origin).dot(face.tangent2));
+  };
+  const ConvexPolygon outline = ConvexPolygon::triangle(inFace(corners[0]), inFace(corners[1]), inFace(corners[2]));
+  face.faceOutline = &outline;
+
+  AlignedBox3r box;
+  for (const Vector3r& x : corners) box.extend(x);
+  box.min().array() -= margin;
+  box.max().array() += margin;
+  PressureGeom geom;
+  mesh.tree().query([&](const AlignedBox3r& b) { return b.intersects(box); }, [&](int t) {
+    if (trianglePlaneGeom(mesh, t, face, motion, geom)) geoms.push_back(geom);
+  });
+}
+
+}  // namespace roundedmesh

@@ -1,0 +1,17 @@
+#include "pkg/geom/Ig2_RoundedMesh_Sphere_PressureGeom.hpp"
+
+namespace roundedmesh {
+
+void Ig2_RoundedMesh_Sphere_PressureGeom(const RoundedMesh& mesh, const Sphere& sphere, const Vector3r& centre,
+                                         const RelativeMotion& motion, std::vector<PressureGeom>& geoms) {
+  ContactSphere partner;
+  partner.centre = centre;
+  partner.radius = sphere.radius;
+  const AlignedBox3r box(centre.array() - sphere.radius, centre.array() + sphere.radius);
+  PressureGeom geom;
+  mesh.tree().query([&](const AlignedBox3r& b) { return b.intersects(box); }, [&](int t) {
+    if (triangleSphereGeom(mesh, t, partner, motion, geom)) geoms.push_back(geom);
+  });
+}
+
+}  // namespace roundedmesh

@@ -1,0 +1,66 @@
+"""One contact evaluated without a YADE scene, through the same pipeline the engine runs each step: for
+validation, for pictures, and to look inside a contact.
+
+    body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, ...) -> (F1, T1, F2, T2)
+    sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, ...) -> (F1, T1, F2, T2)
+    triangle_contacts(mesh1, pos1, ori1, mesh2_or_radius, pos2, ori2, ...) -> the triangle pairs in contact
+
+Forces [N] and torques [N m] are global; each torque is about its own body's position. Velocities [m/s] and
+angular velocities [rad/s] are global. gamma and regime choose the pressure integration as for engine().
+"""
+import numpy as np
+
+from ._core import _body_contact, _sphere_contact
+
+_ZERO = (0.0, 0.0, 0.0)
+
+
+def body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
+                 vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto"):
+    """(force on 1, torque on 1, force on 2, torque on 2) of two rounded bodies: Mesh mesh1 in its principal
+    frame placed at pos1 turned by ori1, likewise mesh2; materials are HertzMaterials."""
+    return _body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1, ang_vel1, vel2, ang_vel2,
+                         gamma, regime)[:4]
+
+
+def sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel=_ZERO, ang_vel=_ZERO,
+                   sphere_vel=_ZERO, sphere_ang_vel=_ZERO, gamma=10.0, regime="auto"):
+    """(force on the body, torque on it, force on the sphere, torque on it) of a rounded body against an
+    analytic sphere of `radius` [m] centred at `centre` (what a YADE Sphere partner is)."""
+    return _sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel, ang_vel, sphere_vel,
+                           sphere_ang_vel, gamma, regime)[:4]
+
+
+def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
+                      vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto"):
+    """The triangle pairs in contact in body_contact's configuration, as a dict of numpy arrays with one row
+    per pair. `mesh2` may instead be a number: the radius of an analytic sphere centred at pos2 (ori2 is then
+    ignored). Columns:
+        triangle1, triangle2     triangle indices (-1 for the analytic sphere)
+        sphere_overlap           delta_s of the encompassing spheres, Eq. 10 [m]
+        effective_overlap        delta_eff, Eq. B.4 [m]
+        radius, contact_radius   R* (Eq. 3) and a (Eq. 5) [m]
+        point, normal            c_eff [m] and n12 (rows of 3, global)
+        regime                   'quadrature' or 'direct' (Eq. 14)
+        normal_force             F_n on body 2 along n12 [N]
+        tangential_force         F_t on body 2 (rows of 3, global) [N]; body 1 receives the opposite
+        sliding                  whether Eq. 21 chose the sliding regime
+        node_forces1, node_forces2   Eq. 15 on each triangle's corners [N] (NaN for the analytic sphere)"""
+    if isinstance(mesh2, (int, float)):
+        listed = _sphere_contact(mesh1, pos1, ori1, pos2, float(mesh2), material1, material2, vel1, ang_vel1, vel2,
+                                 ang_vel2, gamma, regime, True)[4]
+    else:
+        listed = _body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1, ang_vel1, vel2,
+                               ang_vel2, gamma, regime, True)[4]
+    columns = {}
+    for name in ("triangle1", "triangle2"):
+        columns[name] = np.array([c[name] for c in listed], dtype=int)
+    for name in ("sphere_overlap", "effective_overlap", "radius", "contact_radius", "normal_force"):
+        columns[name] = np.array([c[name] for c in listed], dtype=float)
+    for name in ("point", "normal", "tangential_force", "node_forces1"):
+        columns[name] = np.array([list(c[name]) for c in listed], dtype=float).reshape(-1, 3)
+    columns["node_forces2"] = np.array([list(c.get("node_forces2", (np.nan,) * 3)) for c in listed],
+                                       dtype=float).reshape(-1, 3)
+    columns["regime"] = np.array([c["regime"] for c in listed], dtype=str)
+    columns["sliding"] = np.array([c["sliding"] for c in listed], dtype=bool)
+    return columns

@@ -1,0 +1,284 @@
+"""Body-body contact against Hertz (paper Sections 3.1.1 and 3.2): two rounded bodies pressed together along z,
+force against overlap, with the scenes of roundedmesh.validation (E* = 0.5 Pa: both bodies E = 1 Pa, nu = 0;
+curvature prescribed).
+
+    /usr/bin/python3 scripts/validate_body_contact.py [--output out/body_contact] [--only fig3 fig7 ...]
+
+Figures (each a function of FIGURES; each writes its CSVs and PNG and prints its table):
+    fig3  two meshed unit spheres, and a meshed unit sphere against an analytic one, overlap 0 to 5 % of R,
+          42 to 2562 nodes, 6 poses (icosphere frames, then 5 random pairs), against Hertz with R* = R/2:
+              body_contact_fig3_force.csv   force vs overlap, icosphere frames and first random pose
+              body_contact_fig3_nrmse.csv   NRMSE per node count and pose
+              body_contact_fig3.png
+    fig7  pairs of identical prolate spheroids pressed at their equators, R_max/R_min = 1 to 4, 2562 nodes
+          (642 for every ratio and 10242 for ratio 2 as convergence checks), 3 poses, against the exact
+          elliptical Hertz force:
+              body_contact_fig7_force.csv   force vs overlap per ratio, with the references
+              body_contact_fig7_nrmse.csv   NRMSE per ratio and node count
+              body_contact_fig7.png
+    fig8  crossed and parallel cylinders (R = 1 m, L = 4 m), 642, 2562, 10242 nodes, 3 poses, against Hertz
+          sphere-on-plane (crossed) and Eq. 27 (parallel):
+              body_contact_fig8_force.csv, body_contact_fig8_summary.csv, body_contact_fig8.png
+Runs in about 80 s on two cores (most of it meshing the 10242-node spheroid and the 10242-node cylinders).
+"""
+import argparse
+import csv
+import os
+import sys
+import time
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from roundedmesh import validation as v  # noqa: E402
+from roundedmesh.analytic import nrmse  # noqa: E402
+
+SPHERE_NODES = {42: 1, 162: 2, 642: 3, 2562: 4}
+SPHERE_POSES = 6
+SPHEROID_NODES = 2562
+SPHEROID_CHECK_NODES = 642          # every ratio, to show mesh convergence
+SPHEROID_FINE = (2.0, 10242)        # one ratio at a finer mesh
+AXIS_POSES = 3
+CYLINDER_NODES = (642, 2562, 10242)
+
+
+def _write_csv(path, header, rows):
+    with open(path, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(header)
+        writer.writerows(rows)
+
+
+def _log(message):
+    print(message, flush=True)
+
+
+# --- Fig. 3: spheres ------------------------------------------------------------------------------------
+
+def figure_3(output):
+    """Fig. 3 for body-body contact: meshed sphere against a meshed sphere and against an analytic sphere."""
+    sweeps = {}
+    for partner in ("mesh", "sphere"):
+        for n, k in SPHERE_NODES.items():
+            start = time.monotonic()
+            sweeps[partner, n] = v.sphere_pair(k, partner, poses=SPHERE_POSES)
+            _log(f"fig3: {n:4d} nodes against {'a meshed' if partner == 'mesh' else 'an analytic'} sphere, "
+                 f"{SPHERE_POSES} poses, {time.monotonic() - start:.1f} s")
+    overlaps, hertz = v.PAIR_OVERLAPS, sweeps["mesh", 42].reference
+
+    columns, header = [overlaps, hertz], ["overlap_over_R", "hertz"]
+    for (partner, n), sweep in sweeps.items():
+        columns += [sweep.forces[0], sweep.forces[1]]
+        header += [f"{partner}{n}_frame", f"{partner}{n}_random1"]
+    _write_csv(os.path.join(output, "body_contact_fig3_force.csv"), header, np.column_stack(columns))
+    rows = [[partner, n, pose, sweep.errors[pose]] for (partner, n), sweep in sweeps.items()
+            for pose in range(len(sweep.errors))]
+    _write_csv(os.path.join(output, "body_contact_fig3_nrmse.csv"),
+               ["partner", "nodes", "pose (0 = icosphere frames)", "nrmse"], rows)
+
+    figure, axes = plt.subplots(1, 3, figsize=(17, 4.5))
+    for ax, partner, title in ((axes[0], "mesh", "Two meshed spheres"),
+                               (axes[1], "sphere", "Meshed sphere on an analytic sphere")):
+        ax.plot(overlaps * 100, hertz, "k-", lw=2.5, label="Hertz, R* = R/2 (Eq. 6)")
+        for n, colour in zip((42, 162, 642), ("tab:blue", "tab:orange", "tab:green")):
+            ax.plot(overlaps * 100, sweeps[partner, n].forces[0], "--", color=colour, label=f"{n} nodes, frames")
+            ax.plot(overlaps * 100, sweeps[partner, n].forces[1], ":", color=colour, label=f"{n} nodes, random pose")
+        ax.set(xlabel="overlap [% of R]", ylabel="F [N] (E* = 0.5 Pa, R = 1 m)", title=f"{title} (Fig. 3)")
+        ax.legend(fontsize=8)
+    nodes = np.array(list(SPHERE_NODES))
+    floor = 1e-3  # [%]: NRMSE below it (round-off, when every triangle pair takes the direct regime) drawn on it
+    for partner, colour in (("mesh", "tab:blue"), ("sphere", "tab:red")):
+        worst = [max(sweeps[partner, n].worst * 100, floor) for n in nodes]
+        mean = [max(sweeps[partner, n].mean * 100, floor) for n in nodes]
+        frame = [max(sweeps[partner, n].errors[0] * 100, floor) for n in nodes]
+        axes[2].loglog(nodes, worst, "s-", color=colour, label=f"{partner} partner, worst of {SPHERE_POSES}")
+        axes[2].loglog(nodes, mean, "o--", color=colour, label=f"{partner} partner, mean")
+        axes[2].loglog(nodes, frame, "^:", color=colour, label=f"{partner} partner, icosphere frames")
+    axes[2].set(xlabel="nodes", ylabel=f"NRMSE [%] (round-off drawn at {floor:g})",
+                title="Convergence, prescribed curvature", ylim=(0.5 * floor, 20))
+    axes[2].legend(fontsize=8)
+    axes[2].grid(True, which="both", alpha=0.3)
+    figure.tight_layout()
+    figure.savefig(os.path.join(output, "body_contact_fig3.png"), dpi=120)
+    plt.close(figure)
+
+    lines = [f"S2 pair: NRMSE against Hertz (R* = R/2), overlap to 5 % of R, {SPHERE_POSES} poses "
+             "(pose 0: icosphere frames, vertex on vertex; then random)",
+             "partner   nodes   frames    worst     mean      per pose [%]"]
+    for (partner, n), sweep in sweeps.items():
+        lines.append(f"{partner:8s} {n:6d}   {100 * sweep.errors[0]:6.3f}   {100 * sweep.worst:6.3f}   "
+                     f"{100 * sweep.mean:6.3f}    " + " ".join(f"{100 * e:.3f}" for e in sweep.errors))
+    return lines
+
+
+# --- Fig. 7: spheroid pairs -----------------------------------------------------------------------------
+
+def figure_7(output):
+    """Fig. 7: NRMSE against the exact elliptical Hertz force vs R_max/R_min for pairs of prolate spheroids."""
+    sweeps = {}
+    runs = [(r, SPHEROID_NODES) for r in v.S5_RATIOS] + [(r, SPHEROID_CHECK_NODES) for r in v.S5_RATIOS]
+    runs.append(SPHEROID_FINE)
+    for ratio, nodes in runs:
+        start = time.monotonic()
+        sweeps[ratio, nodes] = v.spheroid_pair(ratio, nodes, poses=AXIS_POSES)
+        _log(f"fig7: ratio {ratio:.1f}, {nodes} nodes ({sweeps[ratio, nodes].nodes} meshed), {AXIS_POSES} poses, "
+             f"{time.monotonic() - start:.1f} s")
+
+    rows = []
+    for (ratio, nodes), s in sweeps.items():
+        for pose, force in enumerate(s.forces):
+            rows += [[ratio, s.nodes, pose, d, f, e, c, h, int(i)]
+                     for d, f, e, c, h, i in zip(s.overlaps, force, s.reference, s.circular, s.approximate, s.in_range)]
+    _write_csv(os.path.join(output, "body_contact_fig7_force.csv"),
+               ["ratio", "nodes", "pose", "overlap", "force", "exact_elliptical_hertz", "circular_hertz_mean_curvature",
+                "approximate_elliptical_hertz", "within_search_limit"], rows)
+
+    header = ["ratio", "a", "b", "nodes", "max_overlap", "search_limit", "nrmse_worst", "nrmse_mean",
+              "nrmse_in_range_worst", "nrmse_in_range_mean", "force_over_exact_at_limit", "nrmse_vs_circular_worst",
+              "circular_vs_exact", "approximate_vs_exact", "increasing_all_poses"]
+    table = []
+    for (ratio, nodes), s in sweeps.items():
+        last = np.flatnonzero(s.in_range)[-1]
+        table.append([ratio, np.sqrt(ratio) * v.S5_SEMI_MINOR, v.S5_SEMI_MINOR, s.nodes, s.overlaps[-1], s.limit,
+                      s.worst, s.mean, s.errors_in_range.max(), s.errors_in_range.mean(),
+                      float(np.mean(s.forces[:, last]) / s.reference[last]), s.circular_errors.max(), s.model_error,
+                      nrmse(s.approximate, s.reference), bool(s.increasing().all())])
+    _write_csv(os.path.join(output, "body_contact_fig7_nrmse.csv"), header, table)
+
+    figure, (left, right) = plt.subplots(1, 2, figsize=(13, 4.5))
+    ratios = np.array(v.S5_RATIOS)
+    primary = [sweeps[r, SPHEROID_NODES] for r in ratios]
+    check = [sweeps[r, SPHEROID_CHECK_NODES] for r in ratios]
+    left.plot(ratios, [100 * s.errors_in_range.max() for s in primary], "s-",
+              label=f"model, {SPHEROID_NODES} nodes, worst")
+    left.plot(ratios, [100 * s.errors_in_range.mean() for s in primary], "o--",
+              label=f"model, {SPHEROID_NODES} nodes, mean")
+    left.plot(ratios, [100 * s.errors_in_range.max() for s in check], "^:",
+              label=f"model, {SPHEROID_CHECK_NODES} nodes, worst")
+    fine = sweeps[SPHEROID_FINE]
+    left.plot([SPHEROID_FINE[0]], [100 * fine.errors_in_range.max()], "k*", ms=10, label=f"model, {fine.nodes} nodes")
+    left.plot(ratios, [100 * s.model_error for s in primary], "d-.", label="circular Hertz, mean curvature")
+    left.plot(ratios, [100 * nrmse(s.approximate, s.reference) for s in primary], "x:",
+              label="equivalent-radius approx.")
+    left.set(xlabel="R_max / R_min", ylabel="NRMSE vs exact elliptical Hertz [%]",
+             title="Spheroid pairs, overlap to 7.5 % of a (Fig. 7a)")
+    left.legend(fontsize=8)
+    left.grid(True, alpha=0.3)
+    for s, colour in zip(primary, plt.cm.viridis(np.linspace(0, 0.9, len(primary)))):
+        keep = s.in_range
+        right.plot(s.overlaps[keep] / s.overlaps[-1], s.forces.mean(axis=0)[keep] / s.reference[keep], "-",
+                   color=colour, label=f"ratio {s.ratio:g}, model")
+        right.plot(s.overlaps / s.overlaps[-1], s.circular / s.reference, ":", color=colour)
+    right.axhline(1, color="k", lw=1)
+    right.set(xlabel="overlap / max overlap", ylabel="F / F_exact",
+              title="Model (solid, mean of poses) and circular Hertz (dotted)", ylim=(0.75, 1.25))
+    right.legend(fontsize=8, ncol=2)
+    figure.tight_layout()
+    figure.savefig(os.path.join(output, "body_contact_fig7.png"), dpi=120)
+    plt.close(figure)
+
+    lines = ["S5 spheroid pairs: NRMSE [%] against exact elliptical Hertz, b = 1 m fixed, a = sqrt(ratio) b, "
+             f"overlap to 7.5 % of a, {AXIS_POSES} poses; 'in range': overlaps <= the engine's search limit",
+             "ratio  nodes  max ovl  limit   worst   mean  | in range: worst   mean  F/F_ex | vs circular  "
+             "circ vs exact  approx vs exact  increasing"]
+    for row in table:
+        ratio, _, _, n, dmax, limit, worst, mean, worst_in, mean_in, at_limit, vs_circ, circ, approx, up = row
+        lines.append(f"{ratio:5.1f}  {n:5d}  {dmax:.4f}  {limit:.4f}  {100 * worst:5.2f}  {100 * mean:5.2f} |"
+                     f"          {100 * worst_in:5.2f}  {100 * mean_in:5.2f}  {at_limit:5.3f} |   {100 * vs_circ:6.2f}"
+                     f"        {100 * circ:6.2f}          {100 * approx:6.3f}       {up}")
+    return lines
+
+
+# --- Fig. 8: cylinders ----------------------------------------------------------------------------------
+
+def figure_8(output):
+    """Fig. 8: crossed and parallel cylinders, force against overlap with the analytic solutions."""
+    sweeps = {}
+    for arrangement in ("crossed", "parallel"):
+        for nodes in CYLINDER_NODES:
+            start = time.monotonic()
+            sweeps[arrangement, nodes] = v.cylinder_pair(arrangement, nodes, poses=AXIS_POSES)
+            _log(f"fig8: {arrangement} cylinders, {nodes} nodes, {AXIS_POSES} poses, {time.monotonic() - start:.1f} s")
+    overlaps = v.CYLINDER_OVERLAPS
+
+    columns = [overlaps, sweeps["crossed", 642].reference, sweeps["parallel", 642].reference]
+    header = ["overlap_over_R", "crossed_hertz_R", "parallel_eq27"]
+    for (arrangement, nodes), s in sweeps.items():
+        for pose, force in enumerate(s.forces):
+            columns.append(force)
+            header.append(f"{arrangement}{s.nodes}_pose{pose}")
+    _write_csv(os.path.join(output, "body_contact_fig8_force.csv"), header, np.column_stack(columns))
+
+    table = []
+    for (arrangement, nodes), s in sweeps.items():
+        stiffness = s.stiffness_errors() if arrangement == "parallel" else np.full(len(s.forces), np.nan)
+        exponents = [v.power_law_exponent(s.overlaps, f) for f in s.forces]
+        table.append([arrangement, s.nodes, s.worst, s.mean, float(np.mean(s.forces[:, -1]) / s.reference[-1]),
+                      float(np.mean(stiffness)), float(np.min(stiffness)), float(np.max(stiffness)),
+                      float(np.mean(exponents)), bool(s.increasing().all())])
+    _write_csv(os.path.join(output, "body_contact_fig8_summary.csv"),
+               ["arrangement", "nodes", "nrmse_worst", "nrmse_mean", "force_over_reference_at_max",
+                "stiffness_error_mean", "stiffness_error_min", "stiffness_error_max", "power_law_exponent_mean",
+                "increasing_all_poses"], table)
+
+    figure, axes = plt.subplots(1, 2, figsize=(13, 4.5))
+    for ax, arrangement, label in ((axes[0], "crossed", "Hertz sphere on plane, R* = R (Eq. 6)"),
+                                   (axes[1], "parallel", "line contact, pi/4 E* L delta (Eq. 27)")):
+        ax.plot(overlaps * 100, sweeps[arrangement, 642].reference, "k-", lw=2.5, label=label)
+        for nodes, colour in zip(CYLINDER_NODES, ("tab:blue", "tab:orange", "tab:green")):
+            s = sweeps[arrangement, nodes]
+            ax.plot(overlaps * 100, s.forces[0], "--", color=colour, label=f"{s.nodes} nodes")
+            for force in s.forces[1:]:
+                ax.plot(overlaps * 100, force, ":", color=colour, lw=0.8)
+        ax.set(xlabel="overlap [% of R]", ylabel="F [N] (E* = 0.5 Pa, R = 1 m, L = 4 m)",
+               title=f"{arrangement.capitalize()} cylinders (Fig. 8{'a' if arrangement == 'crossed' else 'b'})")
+        ax.legend(fontsize=8)
+    figure.tight_layout()
+    figure.savefig(os.path.join(output, "body_contact_fig8.png"), dpi=120)
+    plt.close(figure)
+
+    lines = [f"S5 cylinders (R = {v.CYLINDER_RADIUS:g} m, L = {v.CYLINDER_LENGTH:g} m), overlap to 7.5 % of R, "
+             f"{AXIS_POSES} poses about the axes",
+             "arrangement  nodes  NRMSE worst  mean [%]  F/F_ref at max  stiffness error mean (min..max) [%]  "
+             "exponent n (F ~ delta^n)  increasing"]
+    for arrangement, n, worst, mean, at_max, stiff, stiff_min, stiff_max, exponent, up in table:
+        stiffness = (f"{100 * stiff:6.1f} ({100 * stiff_min:.1f}..{100 * stiff_max:.1f})" if arrangement == "parallel"
+                     else "     -")
+        lines.append(f"{arrangement:11s}  {n:5d}    {100 * worst:6.2f}   {100 * mean:6.2f}      {at_max:6.3f}"
+                     f"        {stiffness:24s}            {exponent:5.3f}          {up}")
+    return lines
+
+
+# --- the figures, in order. Fig. 6 (S4, friction ramp) goes here: a function figure_6(output) that writes its
+# CSVs and PNG into `output` and returns the lines of its table, added to FIGURES under the name "fig6".
+FIGURES = {
+    "fig3": figure_3,
+    "fig7": figure_7,
+    "fig8": figure_8,
+}
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--output", default="out/body_contact")
+    parser.add_argument("--only", nargs="+", choices=sorted(FIGURES), help="run only these figures")
+    args = parser.parse_args(argv)
+    os.makedirs(args.output, exist_ok=True)
+    start = time.monotonic()
+    tables = []
+    for name, make in FIGURES.items():
+        if args.only and name not in args.only:
+            continue
+        figure_start = time.monotonic()
+        tables.append(make(args.output))
+        _log(f"{name}: done in {time.monotonic() - figure_start:.1f} s")
+    for lines in tables:
+        print()
+        print("\n".join(lines))
+    print(f"\nwrote {args.output}/body_contact_fig*.csv and .png in {time.monotonic() - start:.1f} s")
+
+
+main(sys.argv[1:])
