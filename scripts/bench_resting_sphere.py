@@ -7,13 +7,12 @@ figure on a shared machine.
 """
 import argparse
 import sys
-import time
 
 import numpy as np
 from yade import O
 
 import roundedmesh as rm
-from roundedmesh.benchmarking import machine
+from roundedmesh.benchmarking import machine, step_times_ms
 from roundedmesh.scenes import build_bouncing_sphere
 
 
@@ -28,12 +27,7 @@ def main(argv):
         build_bouncing_sphere(subdivisions)
         O.bodies[0].state.pos = (0, 0, 0.0245)  # resting: about 2 % overlap
         O.run(2000, True)                     # settle
-        wall, cpu = [], []
-        for _ in range(args.repetitions):
-            start, start_cpu = time.perf_counter(), time.process_time()
-            O.run(args.steps, True)
-            wall.append((time.perf_counter() - start) / args.steps * 1e3)
-            cpu.append((time.process_time() - start_cpu) / args.steps * 1e3)
+        wall, cpu = step_times_ms(args.steps, args.repetitions)
         contacts = rm.statistics()
         print(f"{nodes:6d} {np.median(wall):13.4f} {np.median(cpu):12.4f} {min(cpu):8.4f} {max(cpu):8.4f} "
               f"{contacts['quadrature_contacts'] + contacts['direct_contacts']:9d}")

@@ -40,6 +40,7 @@ from yade.minieigenHP import Quaternion
 
 import roundedmesh as rm
 import roundedmesh.scene  # noqa: F401  (the engine's step, wrapped for timing in --measure)
+from roundedmesh import benchmarking
 from roundedmesh.benchmarking import machine
 from roundedmesh.progress import Progress
 
@@ -227,12 +228,7 @@ def measure(args, path):
     threads = ctypes.CDLL("libgomp.so.1").omp_get_max_threads()
     if args.warmup > 0:  # O.run(0) would run for ever
         O.run(args.warmup, True)
-    wall, cpu = [], []
-    for _ in range(args.blocks):
-        start, start_cpu = time.perf_counter(), time.process_time()
-        O.run(args.block_steps, True)
-        wall.append((time.perf_counter() - start) / args.block_steps * 1e3)
-        cpu.append((time.process_time() - start_cpu) / args.block_steps * 1e3)
+    wall, cpu = benchmarking.step_times_ms(args.block_steps, args.blocks)
     stats = rm.statistics()
 
     # One more block with YADE's per-engine timing, and the Python step and the C++ engine.step timed.

@@ -128,13 +128,12 @@ def friction_ramp(subdivisions, scene=S4, label=None):
     wall = O.bodies.append(utils.wall(0, axis=2, sense=1))
     assign_material(wall, scene.wall)
     f_max = scene.friction * mass * scene.gravity
-    push = PyRunner(command=f"O.forces.addF({sphere}, (_rm_push(), 0, 0))", iterPeriod=1, initRun=True)
-    O.engines = [ForceResetter(), engine(), push, NewtonIntegrator(gravity=(0, 0, -scene.gravity), damping=0)]
-    O.dt = scene.timestep
-    start = scene.settle_time
     rate = 1.5 * f_max / scene.ramp_time
-    import builtins
-    builtins._rm_push = lambda: max(O.time - start, 0.0) * rate
+    push = f"max(O.time - {scene.settle_time!r}, 0.0) * {rate!r}"  # F_A(t) [N], evaluated by YADE each step
+    O.engines = [ForceResetter(), engine(), PyRunner(command=f"O.forces.addF({sphere}, ({push}, 0, 0))", iterPeriod=1,
+                                                     initRun=True),
+                 NewtonIntegrator(gravity=(0, 0, -scene.gravity), damping=0)]
+    O.dt = scene.timestep
     settle = int(round(scene.settle_time / O.dt))
     O.run(settle, True)
     steps = int(round(scene.ramp_time / O.dt))
@@ -142,7 +141,7 @@ def friction_ramp(subdivisions, scene=S4, label=None):
     reporter = progress.Progress(steps, label) if label else None
     x0 = O.bodies[sphere].state.pos[0]
     for i in range(steps):
-        applied = builtins._rm_push()
+        applied = eval(push)
         O.step()
         out["time"][i] = O.time
         out["applied"][i] = applied
@@ -151,6 +150,5 @@ def friction_ramp(subdivisions, scene=S4, label=None):
         out["sliding"][i] = statistics()["sliding_contacts"]
         if reporter:
             reporter.update(i + 1)
-    del builtins._rm_push
     out["f_max"] = f_max
     return out
