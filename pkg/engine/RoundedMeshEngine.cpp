@@ -208,7 +208,7 @@ void RoundedMeshEngine(const ContactModel& model, ContactData& data) {
   broadPhase(model, data);
   const int pairCount = static_cast<int>(data.pairs.size());
   data.pairResults.resize(pairCount);
-#pragma omp parallel for schedule(dynamic, 4)
+#pragma omp parallel for schedule(dynamic, 4) if (pairCount > 1)
   for (int k = 0; k < pairCount; ++k)
     data.pairResults[k] = resolvePair(model, data, data.pairs[k], data.geoms[omp_get_thread_num()]);
 
