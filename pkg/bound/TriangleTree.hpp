@@ -84,6 +84,13 @@ template <class Visit>
 void TriangleTree::queryPairs(const TriangleTree& a, const TriangleTree& b, const Matrix3r& rotation,
                               const Vector3r& translation, Real margin, const Visit& visit) {
   if (a.nodes_.empty() || b.nodes_.empty()) return;
+  // transformedBox with |R| formed once.
+  const Matrix3r absRotation = rotation.cwiseAbs();
+  auto moved = [&](const AlignedBox3r& box) {
+    const Vector3r centre = rotation * box.center() + translation;
+    const Vector3r half = (absRotation * (0.5 * box.sizes())).array() + margin;
+    return AlignedBox3r(centre - half, centre + half);
+  };
   std::array<std::array<int, 2>, kStackSize> stack;
   int top = 0;
   stack[top++] = {0, 0};
@@ -91,12 +98,12 @@ void TriangleTree::queryPairs(const TriangleTree& a, const TriangleTree& b, cons
     const auto [i, j] = stack[--top];
     const Node& na = a.nodes_[i];
     const Node& nb = b.nodes_[j];
-    const AlignedBox3r boxB = transformedBox(nb.box, rotation, translation, margin);
+    const AlignedBox3r boxB = moved(nb.box);
     if (!na.box.intersects(boxB)) continue;
     if (na.count > 0 && nb.count > 0) {
       for (int q = nb.first; q < nb.first + nb.count; ++q) {
         const int t = b.order_[q];
-        const AlignedBox3r triangleB = transformedBox(b.boxes_[t], rotation, translation, margin);
+        const AlignedBox3r triangleB = moved(b.boxes_[t]);
         for (int p = na.first; p < na.first + na.count; ++p)
           if (a.boxes_[a.order_[p]].intersects(triangleB)) visit(a.order_[p], t);
       }

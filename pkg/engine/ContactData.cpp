@@ -4,9 +4,13 @@ namespace roundedmesh {
 
 ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& other) {
   bodyPairs += other.bodyPairs;
+  touchingPairs += other.touchingPairs;
+  narrowPhase += other.narrowPhase;
   quadratureContacts += other.quadratureContacts;
   directContacts += other.directContacts;
   slidingContacts += other.slidingContacts;
+  neighbourRebuilds += other.neighbourRebuilds;
+  candidateRebuilds += other.candidateRebuilds;
   return *this;
 }
 

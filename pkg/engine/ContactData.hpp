@@ -1,7 +1,8 @@
 // What changes every step: the states the engine reads (filled by the caller, in the order of the
-// model's bodies and partners), the candidate pairs of the broad phase, the wrenches the engine produces
-// (force [N] and torque [N m] about each body's own position, global frame), contact counts, and scratch
-// space reused from step to step.
+// model's bodies and partners), the wrenches it produces (force [N] and torque [N m] about each body's own
+// position, global frame), the counts and times of its stages, and what it keeps from step to step: the
+// neighbour list of the broad phase and, per neighbouring pair of rounded bodies, its list of candidate
+// triangle pairs (both Verlet lists, rebuilt only when the motion since their build exceeds their skin).
 #pragma once
 
 #include <vector>
@@ -13,20 +14,37 @@
 
 namespace roundedmesh {
 
+// The funnel of one step, from body pairs down to triangle contacts, with the rejections of each test of
+// the narrow phase in the order they run (Appendix B): facing check (Eq. B.5), sphere overlap (Eq. 10),
+// projected circumcircle against the contact circle, empty polygon S, contact circle against S (h < a).
 struct ContactStatistics {
   int bodyPairs = 0;           // pairs whose bounds overlap
+  int touchingPairs = 0;       // pairs with at least one triangle contact
+  NarrowPhaseCounts narrowPhase;  // triangle pairs (or triangle-partner pairs) tested, and their rejections
   int quadratureContacts = 0;  // triangle contacts integrated by quadrature
   int directContacts = 0;      // triangle contacts in the direct regime
   int slidingContacts = 0;     // triangle contacts sliding (Eq. 21)
+  int neighbourRebuilds = 0;   // rebuilds of the broad phase's neighbour list
+  int candidateRebuilds = 0;   // triangle-pair candidate lists rebuilt from the triangle trees
 
   ContactStatistics& operator+=(const ContactStatistics& other);
+  int contacts() const { return quadratureContacts + directContacts; }
+};
+
+// Wall-clock seconds of each stage of the last step.
+struct StageTimes {
+  Real broadPhase = 0;  // neighbour list and overlapping pairs
+  Real pairs = 0;       // candidate lists, narrow phase and law over all pairs (in parallel)
+  Real reduction = 0;   // pair wrenches summed per body
 };
 
 // A candidate of the broad phase: rounded body `body` against `other`, an index into the model's bodies
-// (other < bodies.size()) or, past them, into its partners (other - bodies.size()).
+// (other < bodies.size()) or, past them, into its partners (other - bodies.size()). `neighbour` is its entry
+// in ContactData::neighbours (-1 for a pair resolved on its own, without the lists kept between steps).
 struct BodyPair {
   int body;
   int other;
+  int neighbour = -1;
 };
 
 // The outcome of one pair: the wrench on each side (global frame, torque about each one's position).
@@ -35,15 +53,36 @@ struct PairResult {
   ContactStatistics statistics;
 };
 
+// Candidate triangle pairs (s of the body, t of the other body) of two rounded bodies: every pair that can
+// be in contact while every point of the other body moves by at most `skin` relative to the body from `rotation`,
+// `translation`, with an effective overlap of at most `depth` (TrianglePairCandidates.hpp).
+struct CandidateList {
+  bool built = false;
+  Real skin = 0;  // [m]
+  int age = 0;    // steps since the build
+  Quaternionr rotation = Quaternionr::Identity();  // the other body's frame in the body's, at the build
+  Vector3r translation = Vector3r::Zero();
+  Real depth = 0;    // the deepest effective overlap it holds every contact of [m]
+  Real deepest = 0;  // the deepest effective overlap of the pair at its last evaluation [m]
+  std::vector<std::array<int, 2>> pairs;
+};
+
 struct ContactData {
   std::vector<BodyState> bodyStates;
   std::vector<BodyState> partnerStates;
   std::vector<Wrench> bodyWrenches;
   std::vector<Wrench> partnerWrenches;
   ContactStatistics statistics;
+  StageTimes times;
 
-  std::vector<BodyPair> pairs;                    // broad phase output
-  std::vector<PairResult> pairResults;            // narrow phase output, one per pair
+  // Broad phase: the neighbour list (pairs whose bounds, grown by half the skin, overlapped at its build),
+  // the world boxes it was built for, grown by half the skin, and each neighbour's candidate list.
+  std::vector<BodyPair> neighbours;
+  std::vector<AlignedBox3r> neighbourBoxes;
+  std::vector<CandidateList> candidateLists;
+
+  std::vector<BodyPair> pairs;                    // pairs whose bounds overlap this step
+  std::vector<PairResult> pairResults;            // one per pair
   std::vector<std::vector<PressureGeom>> geoms;   // scratch: one per thread
 
   // Sizes every array for `model`; states are left for the caller to fill.

@@ -43,10 +43,24 @@ struct Partner {
   HertzMaterial material;
 };
 
+// Skins of the lists kept between steps, as fractions of a volume-equivalent radius. The broad phase's
+// neighbour list grows every bound by half of `neighbours` (times the smallest body's radius) and is rebuilt
+// when a bound leaves its grown box. A pair's candidate triangle pairs hold for relative motions up to the
+// list's skin: the motion the pair made per step over its last list, times `candidateSteps`, within
+// [candidatesMin, candidatesMax] times the smaller radius of the pair, so that a list lasts about
+// candidateSteps steps whether the pair rests or flies (doc/physics.md, "Lists kept between steps").
+struct ListSkins {
+  Real neighbours = 0.2;
+  Real candidatesMin = 0.001;
+  Real candidatesMax = 0.01;
+  Real candidateSteps = 10;
+};
+
 struct ContactModel {
   std::vector<RoundedBody> bodies;
   std::vector<Partner> partners;
   PressureOptions pressure;
+  ListSkins skins;
 };
 
 }  // namespace roundedmesh

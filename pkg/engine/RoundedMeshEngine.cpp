@@ -26,10 +26,11 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 
 constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
 
-// The plane a partner presents to a body at bodyPosition (global frame): a Plane, or a Wall.
-Plane presentedPlane(const PartnerShape& shape, const BodyState& partner, const Vector3r& bodyPosition) {
-  if (const Wall* wall = std::get_if<Wall>(&shape)) return wallPlane(*wall, partner.position, bodyPosition);
-  return std::get<Plane>(shape);
+// Ig2 of a body against a plane given in the global frame.
+void planeGeometry(const RoundedMesh& mesh, const Plane& global, const BodyState& body, const Matrix3r& toBody,
+                   const RelativeMotion& motion, const GeomOutput& out) {
+  Ig2_RoundedMesh_Plane_PressureGeom(mesh, Plane{toBody * (global.point - body.position), toBody * global.normal},
+                                     motion, out);
 }
 
 std::array<Vector3r, 3> facetCorners(const Facet& facet, const BodyState& state) {
@@ -63,44 +64,137 @@ AlignedBox3r partnerBox(const PartnerShape& shape, const BodyState& state) {
                     shape);
 }
 
+// The candidate list of two rounded bodies, brought up to date for body 2's pose in body 1's frame. A list
+// holds contacts 1.5 times as deep as the pair's deepest one at its last evaluation, plus two skins (contacts
+// deepen continuously, so the list grows with them), but never deeper than `deepest`: past it, triangle pairs
+// far from where the bodies touch can pass Appendix B's tests through the huge spheres of flat and concave
+// triangles (doc/physics.md, "Lists kept between steps"). It is rebuilt when it was never built, when a point
+// of body 2 may have moved by more than the skin since (its offset plus the turn times its bound radius;
+// |R - R0| = 2 |vec(q0^-1 q)|), when the deepest contact comes within a skin of the depth it holds, or when it
+// holds more than twice the depth needed (a pair that has come apart, or a new list, built for the deepest
+// contact a pair may start with). The new skin follows the pair's motion per step (ListSkins).
+void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Quaternionr& rotation,
+                      const Vector3r& translation, const ListSkins& skins, Real radius, Real deepest,
+                      CandidateList& list, ContactStatistics& statistics) {
+  const Real smallest = skins.candidatesMin * radius, largest = skins.candidatesMax * radius;
+  Real skin = smallest;
+  if (list.built) {
+    ++list.age;
+    const Real turn = 2 * (list.rotation.conjugate() * rotation).vec().norm();
+    const Real motion = (translation - list.translation).norm() + turn * mesh2.sphereBoundRadius();
+    const Real needed = std::min(1.5 * list.deepest + 2 * list.skin, deepest);
+    const bool deepEnough = list.deepest <= list.depth - list.skin || list.depth >= deepest;
+    if (motion <= list.skin && deepEnough && list.depth <= 2 * needed) return;
+    skin = std::clamp(skins.candidateSteps * motion / list.age, smallest, largest);
+    list.depth = std::min(1.5 * list.deepest + 2 * skin, deepest);
+  } else {
+    list.depth = deepest;
+  }
+  list.built = true;
+  list.skin = skin;
+  list.age = 0;
+  list.rotation = rotation;
+  list.translation = translation;
+  trianglePairCandidates(mesh1, mesh2, rotation.toRotationMatrix(), translation, skin, list.depth, list.pairs);
+  ++statistics.candidateRebuilds;
+}
+
 // Ig2 of body 1's triangles against the other side, in body 1's frame (origin at its position).
 void contactGeometry(const ContactModel& model, const ContactData& data, const BodyPair& pair,
-                     const RelativeMotion& motion, std::vector<PressureGeom>& geoms) {
+                     const RelativeMotion& motion, CandidateList* candidates, std::vector<PressureGeom>& geoms,
+                     ContactStatistics& statistics) {
   const RoundedBody& body = model.bodies[pair.body];
   const BodyState& s1 = data.bodyStates[pair.body];
   const Matrix3r toBody = s1.orientation.toRotationMatrix().transpose();
   auto local = [&](const Vector3r& x) -> Vector3r { return toBody * (x - s1.position); };
+  const GeomOutput out(geoms, &statistics.narrowPhase);
   const int bodyCount = static_cast<int>(model.bodies.size());
   if (pair.other < bodyCount) {
     const BodyState& s2 = data.bodyStates[pair.other];
     const RoundedBody& other = model.bodies[pair.other];
-    Ig2_RoundedMesh_RoundedMesh_PressureGeom(*body.mesh, *other.mesh, toBody * s2.orientation.toRotationMatrix(),
-                                             local(s2.position),
-                                             kDeepestOverlap * std::min(body.equivalentRadius, other.equivalentRadius),
-                                             motion, geoms);
+    const Real smaller = std::min(body.equivalentRadius, other.equivalentRadius);
+    const Quaternionr rotation = s1.orientation.conjugate() * s2.orientation;
+    const Vector3r translation = local(s2.position);
+    CandidateList fresh;
+    CandidateList& list = candidates ? *candidates : fresh;
+    updateCandidates(*body.mesh, *other.mesh, rotation, translation, model.skins, smaller, kDeepestOverlap * smaller,
+                     list, statistics);
+    Ig2_RoundedMesh_RoundedMesh_PressureGeom(*body.mesh, *other.mesh, rotation.toRotationMatrix(), translation,
+                                             list.pairs, motion, out);
     return;
   }
   const BodyState& s2 = data.partnerStates[pair.other - bodyCount];
   const PartnerShape& shape = model.partners[pair.other - bodyCount].shape;
   std::visit(Overloaded{[&](const Box& box) {
                           Ig2_RoundedMesh_Box_PressureGeom(*body.mesh, box, local(s2.position),
-                                                           toBody * s2.orientation.toRotationMatrix(), motion, geoms);
+                                                           toBody * s2.orientation.toRotationMatrix(), motion, out);
                         },
                         [&](const Facet& facet) {
                           std::array<Vector3r, 3> corners = facetCorners(facet, s2);
                           for (Vector3r& x : corners) x = local(x);
                           Ig2_RoundedMesh_Facet_PressureGeom(*body.mesh, corners, kDeepestOverlap * body.equivalentRadius,
-                                                             motion, geoms);
+                                                             motion, out);
                         },
                         [&](const Sphere& sphere) {
-                          Ig2_RoundedMesh_Sphere_PressureGeom(*body.mesh, sphere, local(s2.position), motion, geoms);
+                          Ig2_RoundedMesh_Sphere_PressureGeom(*body.mesh, sphere, local(s2.position), motion, out);
                         },
-                        [&](const auto&) {
-                          const Plane global = presentedPlane(shape, s2, s1.position);
-                          Ig2_RoundedMesh_Plane_PressureGeom(*body.mesh, Plane{local(global.point), toBody * global.normal},
-                                                             motion, geoms);
+                        [&](const Plane& plane) { planeGeometry(*body.mesh, plane, s1, toBody, motion, out); },
+                        [&](const Wall& wall) {
+                          planeGeometry(*body.mesh, wallPlane(wall, s2.position, s1.position), s1, toBody, motion, out);
                         }},
              shape);
+}
+
+// The grown world boxes the neighbour list is built from and checked against.
+AlignedBox3r grown(const AlignedBox3r& box, Real margin) {
+  return AlignedBox3r(box.min().array() - margin, box.max().array() + margin);
+}
+
+// Sweep and prune of the grown boxes along the axis on which the bodies spread most -> data.neighbours, sorted,
+// each keeping the candidate list it had if it was a neighbour before.
+void rebuildNeighbours(const ContactModel& model, ContactData& data, const std::vector<AlignedBox3r>& boxes, Real margin) {
+  const int bodyCount = static_cast<int>(model.bodies.size());
+  const int count = static_cast<int>(boxes.size());
+  data.neighbourBoxes.resize(count);
+  for (int i = 0; i < count; ++i) data.neighbourBoxes[i] = grown(boxes[i], margin);
+  const std::vector<AlignedBox3r>& grownBoxes = data.neighbourBoxes;
+  Vector3r mean = Vector3r::Zero(), meanSq = Vector3r::Zero();
+  for (int b = 0; b < bodyCount; ++b) {
+    const Vector3r& x = data.bodyStates[b].position;
+    mean += x;
+    meanSq += x.cwiseProduct(x);
+  }
+  int axis;
+  (meanSq * bodyCount - mean.cwiseProduct(mean)).maxCoeff(&axis);
+
+  std::vector<int> order(count);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int i, int j) {
+    const Real a = grownBoxes[i].min()[axis], b = grownBoxes[j].min()[axis];
+    return a < b || (a == b && i < j);
+  });
+  std::vector<BodyPair> neighbours;
+  for (int k = 0; k < count; ++k) {
+    const int i = order[k];
+    for (int l = k + 1; l < count && grownBoxes[order[l]].min()[axis] <= grownBoxes[i].max()[axis]; ++l) {
+      const int j = order[l];
+      if ((i >= bodyCount && j >= bodyCount) || !grownBoxes[i].intersects(grownBoxes[j])) continue;
+      neighbours.push_back({std::min(i, j), std::max(i, j)});
+    }
+  }
+  // Sorted, so that the pairs and the sums over them do not depend on how the sweep met them.
+  auto before = [](const BodyPair& a, const BodyPair& b) { return a.body < b.body || (a.body == b.body && a.other < b.other); };
+  std::sort(neighbours.begin(), neighbours.end(), before);
+  std::vector<CandidateList> lists(neighbours.size());
+  size_t old = 0;
+  for (size_t n = 0; n < neighbours.size(); ++n) {
+    neighbours[n].neighbour = static_cast<int>(n);
+    while (old < data.neighbours.size() && before(data.neighbours[old], neighbours[n])) ++old;
+    if (old < data.neighbours.size() && !before(neighbours[n], data.neighbours[old]))
+      lists[n] = std::move(data.candidateLists[old]);
+  }
+  data.neighbours = std::move(neighbours);
+  data.candidateLists = std::move(lists);
 }
 
 }  // namespace
@@ -109,46 +203,51 @@ void broadPhase(const ContactModel& model, ContactData& data) {
   const int bodyCount = static_cast<int>(model.bodies.size());
   const int count = bodyCount + static_cast<int>(model.partners.size());
   std::vector<AlignedBox3r> boxes(count);
-  Vector3r mean = Vector3r::Zero(), meanSq = Vector3r::Zero();
+  Real smallest = kInfinity;
   for (int b = 0; b < bodyCount; ++b) {
-    const Vector3r& x = data.bodyStates[b].position;
-    boxes[b] = ball(x, model.bodies[b].mesh->sphereBoundRadius());
-    mean += x;
-    meanSq += x.cwiseProduct(x);
+    boxes[b] = ball(data.bodyStates[b].position, model.bodies[b].mesh->sphereBoundRadius());
+    smallest = std::min(smallest, model.bodies[b].equivalentRadius);
   }
   for (int p = 0; p < count - bodyCount; ++p)
     boxes[bodyCount + p] = partnerBox(model.partners[p].shape, data.partnerStates[p]);
-  // Sweep along the axis on which the bodies spread most.
-  int axis;
-  (meanSq * bodyCount - mean.cwiseProduct(mean)).maxCoeff(&axis);
-
-  std::vector<int> order(count);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int i, int j) {
-    const Real a = boxes[i].min()[axis], b = boxes[j].min()[axis];
-    return a < b || (a == b && i < j);
-  });
-  data.pairs.clear();
-  for (int k = 0; k < count; ++k) {
-    const int i = order[k];
-    for (int l = k + 1; l < count && boxes[order[l]].min()[axis] <= boxes[i].max()[axis]; ++l) {
-      const int j = order[l];
-      if ((i >= bodyCount && j >= bodyCount) || !boxes[i].intersects(boxes[j])) continue;
-      const int body = std::min(i, j), other = std::max(i, j);
-      if (other < bodyCount &&
-          (data.bodyStates[body].position - data.bodyStates[other].position).norm() >=
-              model.bodies[body].mesh->sphereBoundRadius() + model.bodies[other].mesh->sphereBoundRadius())
-        continue;
-      data.pairs.push_back({body, other});
-    }
+  bool current = static_cast<int>(data.neighbourBoxes.size()) == count;
+  for (int i = 0; current && i < count; ++i) current = data.neighbourBoxes[i].contains(boxes[i]);
+  if (!current) {
+    rebuildNeighbours(model, data, boxes, 0.5 * model.skins.neighbours * smallest);
+    ++data.statistics.neighbourRebuilds;
   }
-  // Sorted, so that the pairs and the sums over them do not depend on how the sweep met them.
-  std::sort(data.pairs.begin(), data.pairs.end(),
-            [](const BodyPair& a, const BodyPair& b) { return a.body < b.body || (a.body == b.body && a.other < b.other); });
+  data.pairs.clear();
+  for (const BodyPair& pair : data.neighbours) {
+    if (!boxes[pair.body].intersects(boxes[pair.other])) continue;
+    if (pair.other < bodyCount &&
+        (data.bodyStates[pair.body].position - data.bodyStates[pair.other].position).norm() >=
+            model.bodies[pair.body].mesh->sphereBoundRadius() + model.bodies[pair.other].mesh->sphereBoundRadius())
+      continue;
+    data.pairs.push_back(pair);
+  }
 }
 
-PairResult resolvePair(const ContactModel& model, const ContactData& data, const BodyPair& pair,
-                       std::vector<PressureGeom>& scratch, std::vector<TriangleContact>* contacts) {
+void pairGeometry(const ContactModel& model, const ContactData& data, const BodyPair& pair,
+                  std::vector<PressureGeom>& geoms, ContactStatistics& statistics, CandidateList* candidates) {
+  const int bodyCount = static_cast<int>(model.bodies.size());
+  const BodyState& s1 = data.bodyStates[pair.body];
+  const BodyState& s2 = pair.other < bodyCount ? data.bodyStates[pair.other] : data.partnerStates[pair.other - bodyCount];
+  const Matrix3r toBody = s1.orientation.toRotationMatrix().transpose();
+  RelativeMotion motion;
+  motion.linear = toBody * (s2.velocity - s1.velocity + s2.angularVelocity.cross(s1.position - s2.position));
+  motion.angular = toBody * (s2.angularVelocity - s1.angularVelocity);
+  geoms.clear();
+  contactGeometry(model, data, pair, motion, candidates, geoms, statistics);
+  ++statistics.bodyPairs;
+  if (!geoms.empty()) ++statistics.touchingPairs;
+  if (candidates) {
+    candidates->deepest = 0;
+    for (const PressureGeom& geom : geoms) candidates->deepest = std::max(candidates->deepest, geom.effectiveOverlap);
+  }
+}
+
+PairResult pairLoad(const ContactModel& model, const ContactData& data, const BodyPair& pair,
+                    const std::vector<PressureGeom>& geoms, std::vector<TriangleContact>* contacts) {
   const int bodyCount = static_cast<int>(model.bodies.size());
   const bool otherIsBody = pair.other < bodyCount;
   const RoundedBody& body = model.bodies[pair.body];
@@ -157,20 +256,11 @@ PairResult resolvePair(const ContactModel& model, const ContactData& data, const
   const HertzMaterial& otherMaterial =
       otherIsBody ? model.bodies[pair.other].material : model.partners[pair.other - bodyCount].material;
   const Matrix3r toGlobal = s1.orientation.toRotationMatrix();
-  const Matrix3r toBody = toGlobal.transpose();
-
-  RelativeMotion motion;
-  motion.linear = toBody * (s2.velocity - s1.velocity + s2.angularVelocity.cross(s1.position - s2.position));
-  motion.angular = toBody * (s2.angularVelocity - s1.angularVelocity);
-  scratch.clear();
-  contactGeometry(model, data, pair, motion, scratch);
-
-  PairResult result;
-  result.statistics.bodyPairs = 1;
   const HertzPhys phys = Ip2_HertzMaterial_HertzMaterial_HertzPhys(body.material, otherMaterial);
   const RoundedMesh& mesh = *body.mesh;
+  PairResult result;
   Wrench local;
-  for (const PressureGeom& geom : scratch) {
+  for (const PressureGeom& geom : geoms) {
     const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, model.pressure);
     ++(load.regime == Regime::Direct ? result.statistics.directContacts : result.statistics.quadratureContacts);
     const Triangle& corners = mesh.triangles()[geom.triangle];
@@ -203,17 +293,33 @@ PairResult resolvePair(const ContactModel& model, const ContactData& data, const
   return result;
 }
 
+PairResult resolvePair(const ContactModel& model, const ContactData& data, const BodyPair& pair,
+                       std::vector<PressureGeom>& scratch, std::vector<TriangleContact>* contacts,
+                       CandidateList* candidates) {
+  ContactStatistics statistics;
+  pairGeometry(model, data, pair, scratch, statistics, candidates);
+  PairResult result = pairLoad(model, data, pair, scratch, contacts);
+  result.statistics += statistics;
+  return result;
+}
+
 void RoundedMeshEngine(const ContactModel& model, ContactData& data) {
   if (data.geoms.size() < static_cast<size_t>(omp_get_max_threads())) data.geoms.resize(omp_get_max_threads());
+  data.statistics = ContactStatistics();
+  const double start = omp_get_wtime();
   broadPhase(model, data);
+  const double broad = omp_get_wtime();
   const int pairCount = static_cast<int>(data.pairs.size());
   data.pairResults.resize(pairCount);
 #pragma omp parallel for schedule(dynamic, 4) if (pairCount > 1)
-  for (int k = 0; k < pairCount; ++k)
-    data.pairResults[k] = resolvePair(model, data, data.pairs[k], data.geoms[omp_get_thread_num()]);
+  for (int k = 0; k < pairCount; ++k) {
+    const BodyPair& pair = data.pairs[k];
+    data.pairResults[k] = resolvePair(model, data, pair, data.geoms[omp_get_thread_num()], nullptr,
+                                      &data.candidateLists[pair.neighbour]);
+  }
+  const double resolved = omp_get_wtime();
 
   const int bodyCount = static_cast<int>(model.bodies.size());
-  data.statistics = ContactStatistics();
   for (Wrench& w : data.bodyWrenches) w = Wrench();
   for (Wrench& w : data.partnerWrenches) w = Wrench();
   for (int k = 0; k < pairCount; ++k) {
@@ -227,6 +333,7 @@ void RoundedMeshEngine(const ContactModel& model, ContactData& data) {
     otherWrench.torque += r.onOther.torque;
     data.statistics += r.statistics;
   }
+  data.times = {broad - start, resolved - broad, omp_get_wtime() - resolved};
 }
 
 }  // namespace roundedmesh

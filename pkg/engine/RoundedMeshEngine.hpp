@@ -1,13 +1,16 @@
 // One contact step (architecture.md, "One time step inside YADE"), as a sequence of stages:
-//   1. broadPhase: the world boxes of bodies and partners swept along one axis -> data.pairs, each with a
+//   1. broadPhase: the world boxes of bodies and partners against the neighbour list (a Verlet list of the
+//      pairs whose boxes, grown by half the skin, overlapped when it was built; rebuilt by sweep and prune
+//      when a box leaves its grown box) -> data.pairs, the pairs whose bounds overlap now, each with a
 //      rounded body on its first side (partners never touch each other here);
-//   2. resolvePair for every pair, in parallel, in the rounded body's frame: Ig2 (triangle contact
-//      geometry) -> Law2 (normal load, Eqs. 12-14; friction, Eqs. 19-21) -> node forces (Eq. 15) and
-//      friction at c_eff -> the wrench on the body (Eqs. 16-17, 22-23) and the equal and opposite one on
-//      the other side -> data.pairResults;
+//   2. resolvePair for every pair, in parallel, in the rounded body's frame: the pair's candidate triangle
+//      pairs (kept between steps, rebuilt from the triangle trees when the relative motion exceeds the skin)
+//      -> Ig2 (triangle contact geometry) -> Law2 (normal load, Eqs. 12-14; friction, Eqs. 19-21) -> node
+//      forces (Eq. 15) and friction at c_eff -> the wrench on the body (Eqs. 16-17, 22-23) and the equal and
+//      opposite one on the other side -> data.pairResults;
 //   3. the pair wrenches summed per body in pair order, so the result is the same for any thread count.
 // Input: model, and data.bodyStates / data.partnerStates. Output: data.bodyWrenches,
-// data.partnerWrenches, data.statistics.
+// data.partnerWrenches, data.statistics, data.times.
 #pragma once
 
 #include <vector>
@@ -33,8 +36,21 @@ struct TriangleContact {
   std::array<Real, 3> partnerNodeForces;  // on body 2's triangle's corners, along n12, when it is a mesh
 };
 
-// Stage 2 for one pair. With `contacts`, also appends every triangle contact of the pair.
+// Stage 2, geometry, for one pair (Ig2 in the body's frame): its triangle contacts -> geoms, the funnel's
+// counts -> statistics. `candidates`: as for resolvePair.
+void pairGeometry(const ContactModel& model, const ContactData& data, const BodyPair& pair,
+                  std::vector<PressureGeom>& geoms, ContactStatistics& statistics, CandidateList* candidates = nullptr);
+
+// Stage 2, load, for one pair's triangle contacts (Law2, node forces, friction): the wrench on each side.
+// With `contacts`, also appends every triangle contact.
+PairResult pairLoad(const ContactModel& model, const ContactData& data, const BodyPair& pair,
+                    const std::vector<PressureGeom>& geoms, std::vector<TriangleContact>* contacts = nullptr);
+
+// Stage 2 for one pair: pairGeometry, then pairLoad. `candidates`: the pair's list kept between steps,
+// brought up to date here; without it, the candidate triangle pairs are found afresh, for contacts up to kDeepestOverlap of the smaller body
+// deep. With `contacts`, also appends every triangle contact of the pair.
 PairResult resolvePair(const ContactModel& model, const ContactData& data, const BodyPair& pair,
-                       std::vector<PressureGeom>& scratch, std::vector<TriangleContact>* contacts = nullptr);
+                       std::vector<PressureGeom>& scratch, std::vector<TriangleContact>* contacts = nullptr,
+                       CandidateList* candidates = nullptr);
 
 }  // namespace roundedmesh

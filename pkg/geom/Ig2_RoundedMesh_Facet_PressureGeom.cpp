@@ -3,7 +3,7 @@
 namespace roundedmesh {
 
 void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::array<Vector3r, 3>& corners, Real margin,
-                                        const RelativeMotion& motion, std::vector<PressureGeom>& geoms) {
+                                        const RelativeMotion& motion, GeomOutput out) {
   const Vector3r normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
   ContactFace face;
   face.origin = corners[0];
@@ -23,7 +23,7 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::arra
   box.max().array() += margin;
   PressureGeom geom;
   mesh.tree().query([&](const AlignedBox3r& b) { return b.intersects(box); }, [&](int t) {
-    if (trianglePlaneGeom(mesh, t, face, motion, geom)) geoms.push_back(geom);
+    out.add(trianglePlaneGeom(mesh, t, face, motion, geom), geom);
   });
 }
 

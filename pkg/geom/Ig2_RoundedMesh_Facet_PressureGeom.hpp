@@ -13,6 +13,6 @@
 namespace roundedmesh {
 
 void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::array<Vector3r, 3>& corners, Real margin,
-                                        const RelativeMotion& motion, std::vector<PressureGeom>& geoms);
+                                        const RelativeMotion& motion, GeomOutput out);
 
 }  // namespace roundedmesh

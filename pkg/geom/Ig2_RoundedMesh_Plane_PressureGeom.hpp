@@ -12,6 +12,6 @@
 namespace roundedmesh {
 
 void Ig2_RoundedMesh_Plane_PressureGeom(const RoundedMesh& mesh, const Plane& plane, const RelativeMotion& motion,
-                                        std::vector<PressureGeom>& geoms);
+                                        GeomOutput out);
 
 }  // namespace roundedmesh

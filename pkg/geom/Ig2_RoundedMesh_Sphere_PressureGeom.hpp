@@ -11,6 +11,6 @@
 namespace roundedmesh {
 
 void Ig2_RoundedMesh_Sphere_PressureGeom(const RoundedMesh& mesh, const Sphere& sphere, const Vector3r& centre,
-                                         const RelativeMotion& motion, std::vector<PressureGeom>& geoms);
+                                         const RelativeMotion& motion, GeomOutput out);
 
 }  // namespace roundedmesh

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "pkg/math/ConvexPolygon.hpp"
 
@@ -25,6 +26,59 @@ struct PressureGeom {
   Vector2r effectivePoint;       // c_eff: the point of S closest to c
   Real effectiveOverlap;         // delta_eff (Eq. B.4) [m]
   Vector3r slip;                 // tangential velocity of body 2 relative to body 1 at c_eff [m/s]
+};
+
+// How the narrow phase of one candidate ended: a contact, or the first of its tests (Appendix B, in the order
+// they run) that rejected it. Converts to true for a contact.
+enum class Rejection { None, NotFacing, NoOverlap, OutsideCircle, EmptyPolygon, BeyondContactCircle };
+
+struct GeomTest {
+  Rejection rejection;
+  explicit operator bool() const { return rejection == Rejection::None; }
+};
+
+// The funnel of the narrow phase: candidates tested, and how many each test rejected.
+struct NarrowPhaseCounts {
+  long candidates = 0;
+  long notFacing = 0;
+  long noOverlap = 0;
+  long outsideCircle = 0;
+  long emptyPolygon = 0;
+  long beyondContactCircle = 0;
+
+  void count(GeomTest result) {
+    ++candidates;
+    switch (result.rejection) {
+      case Rejection::None: break;
+      case Rejection::NotFacing: ++notFacing; break;
+      case Rejection::NoOverlap: ++noOverlap; break;
+      case Rejection::OutsideCircle: ++outsideCircle; break;
+      case Rejection::EmptyPolygon: ++emptyPolygon; break;
+      case Rejection::BeyondContactCircle: ++beyondContactCircle; break;
+    }
+  }
+  NarrowPhaseCounts& operator+=(const NarrowPhaseCounts& o) {
+    candidates += o.candidates;
+    notFacing += o.notFacing;
+    noOverlap += o.noOverlap;
+    outsideCircle += o.outsideCircle;
+    emptyPolygon += o.emptyPolygon;
+    beyondContactCircle += o.beyondContactCircle;
+    return *this;
+  }
+};
+
+// The Ig2 functors' output: the triangle contacts found, and the funnel counts of every candidate tested.
+struct GeomOutput {
+  GeomOutput(std::vector<PressureGeom>& found, NarrowPhaseCounts* funnel = nullptr) : geoms(found), counts(funnel) {}
+
+  std::vector<PressureGeom>& geoms;
+  NarrowPhaseCounts* counts;
+
+  void add(GeomTest result, const PressureGeom& geom) {
+    if (counts) counts->count(result);
+    if (result) geoms.push_back(geom);
+  }
 };
 
 // Velocity of body 2's material relative to body 1's at a point x of body 1's frame: linear + angular x x.

@@ -4,33 +4,33 @@
 
 namespace roundedmesh {
 
-bool trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactFace& face, const RelativeMotion& motion,
-                       PressureGeom& geom) {
+GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactFace& face,
+                           const RelativeMotion& motion, PressureGeom& geom) {
   const RoundedTriangle& rounded = mesh.rounded(triangle);
-  if (!(rounded.normal.dot(face.normal) > 0)) return false;
+  if (!(rounded.normal.dot(face.normal) > 0)) return {Rejection::NotFacing};
 
   const Real R = rounded.radius;
   const Real distance = face.normal.dot(face.origin - rounded.sphereCentre);
   const Real overlap = R - distance;
-  if (!(overlap > 0)) return false;
+  if (!(overlap > 0)) return {Rejection::NoOverlap};
   const Real a = std::sqrt(overlap * R);
 
   const Vector3r c = rounded.sphereCentre + distance * face.normal;
   // The projected triangle lies in the projected circumcircle: if that misses the contact circle, so does S.
   const Vector3r offset = rounded.circumcentre - c;
   const Real inPlaneSq = offset.squaredNorm() - std::pow(offset.dot(face.normal), 2);
-  if (inPlaneSq > std::pow(a + rounded.circumradius, 2)) return false;
+  if (inPlaneSq > std::pow(a + rounded.circumradius, 2)) return {Rejection::OutsideCircle};
 
   auto toPlane = [&](const Vector3r& x) { return Vector2r((x - c).dot(face.tangent1), (x - c).dot(face.tangent2)); };
   const Triangle& corners = mesh.triangles()[triangle];
   for (int i = 0; i < 3; ++i) geom.nodes[i] = toPlane(mesh.vertices()[corners[i]]);
   geom.polygon = ConvexPolygon::triangle(geom.nodes[0], geom.nodes[1], geom.nodes[2]);
   if (face.faceOutline) geom.polygon = geom.polygon.intersection(face.faceOutline->translated(toPlane(face.origin)));
-  if (geom.polygon.empty()) return false;
+  if (geom.polygon.empty()) return {Rejection::EmptyPolygon};
 
   geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
   const Real hSq = geom.effectivePoint.squaredNorm();
-  if (!(hSq < a * a)) return false;
+  if (!(hSq < a * a)) return {Rejection::BeyondContactCircle};
 
   geom.triangle = triangle;
   geom.partnerTriangle = -1;
@@ -43,7 +43,7 @@ bool trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactFace&
   geom.contactRadius = a;
   geom.effectiveOverlap = overlap - R + std::sqrt(R * R - hSq);
   setRelativeVelocity(geom, motion);
-  return true;
+  return {Rejection::None};
 }
 
 }  // namespace roundedmesh

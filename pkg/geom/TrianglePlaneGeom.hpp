@@ -6,8 +6,8 @@
 //   contact circle (Eq. 5):  a = sqrt(delta_s R)
 //   polygon S:               projected triangle, clipped to the face when the face is finite
 //   effective overlap (B.4): delta_eff = delta_s - R + sqrt(R^2 - h^2), h = |c_eff - c|
-// Returns false, leaving geom unspecified, unless the contact circle meets S (h < a): only then can the
-// pressure of Eq. 9 act on the triangle.
+// Rejects the candidate (leaving geom unspecified) unless the contact circle meets S (h < a): only then can
+// the pressure of Eq. 9 act on the triangle.
 #pragma once
 
 #include "pkg/geom/PressureGeom.hpp"
@@ -25,7 +25,7 @@ struct ContactFace {
   const ConvexPolygon* faceOutline = nullptr;
 };
 
-bool trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactFace& face, const RelativeMotion& motion,
-                       PressureGeom& geom);
+GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactFace& face,
+                           const RelativeMotion& motion, PressureGeom& geom);
 
 }  // namespace roundedmesh

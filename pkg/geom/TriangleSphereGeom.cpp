@@ -14,37 +14,51 @@ bool missesContactCircle(const Vector3r& x, Real rho, const Vector3r& c, const V
   return inPlaneSq > std::pow(a + rho, 2);
 }
 
-}  // namespace
+// The partner as a ContactSphere already in body 1's frame.
+struct GivenSphere {
+  const ContactSphere& sphere;
+  const Vector3r& centre() const { return sphere.centre; }
+  Real radius() const { return sphere.radius; }
+  int triangle() const { return sphere.triangle; }
+  Vector3r normal() const { return sphere.normal; }
+  const Vector3r& corner(int i) const { return sphere.corners[i]; }
+};
 
-ContactSphere contactSphere(const RoundedMesh& mesh2, int t, const Matrix3r& rotation, const Vector3r& translation) {
-  const RoundedTriangle& rounded = mesh2.rounded(t);
-  ContactSphere sphere;
-  sphere.centre = rotation * rounded.sphereCentre + translation;
-  sphere.radius = rounded.radius;
-  sphere.triangle = t;
-  sphere.normal = rotation * rounded.normal;
-  const Triangle& corners = mesh2.triangles()[t];
-  for (int i = 0; i < 3; ++i) sphere.corners[i] = rotation * mesh2.vertices()[corners[i]] + translation;
-  return sphere;
-}
+// The partner as a triangle of body 2's mesh, each piece moved into body 1's frame when first asked for.
+struct MovedTriangle {
+  explicit MovedTriangle(const PlacedTriangle& p)
+      : placed(p), rounded(p.mesh.rounded(p.triangle)), centre_(p.rotation * rounded.sphereCentre + p.translation) {}
+  const Vector3r& centre() const { return centre_; }
+  Real radius() const { return rounded.radius; }
+  int triangle() const { return placed.triangle; }
+  Vector3r normal() const { return placed.rotation * rounded.normal; }
+  Vector3r corner(int i) const {
+    return placed.rotation * placed.mesh.vertices()[placed.mesh.triangles()[placed.triangle][i]] + placed.translation;
+  }
 
-bool triangleSphereGeom(const RoundedMesh& mesh, int triangle, const ContactSphere& sphere,
-                        const RelativeMotion& motion, PressureGeom& geom) {
+  const PlacedTriangle placed;
+  const RoundedTriangle& rounded;
+  Vector3r centre_;
+};
+
+template <class Partner>
+GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partner, const RelativeMotion& motion,
+                    PressureGeom& geom) {
   const RoundedTriangle& rounded = mesh.rounded(triangle);
-  const Vector3r d = sphere.centre - rounded.sphereCentre;
-  const bool isTriangle = sphere.triangle >= 0;
-  if (!(rounded.normal.dot(d) > 0) || (isTriangle && !(sphere.normal.dot(d) < 0))) return false;
+  const Vector3r d = partner.centre() - rounded.sphereCentre;
+  const bool isTriangle = partner.triangle() >= 0;
+  if (!(rounded.normal.dot(d) > 0) || (isTriangle && !(partner.normal().dot(d) < 0))) return {Rejection::NotFacing};
 
-  const Real R1 = rounded.radius, R2 = sphere.radius;
+  const Real R1 = rounded.radius, R2 = partner.radius();
   const Real distance = d.norm();
   const Real overlap = R1 + R2 - distance;
-  if (!(overlap > 0)) return false;
+  if (!(overlap > 0)) return {Rejection::NoOverlap};
   const Vector3r n = d / distance;
   const Real R = R1 * R2 / (R1 + R2);
   const Real a = std::sqrt(overlap * R);
   // (d - R2)(d + R2) rather than d^2 - R2^2: no cancellation when R2 is huge (a nearly flat triangle).
   const Vector3r c = rounded.sphereCentre + ((distance - R2) * (distance + R2) + R1 * R1) / (2 * distance) * n;
-  if (missesContactCircle(rounded.circumcentre, rounded.circumradius, c, n, a)) return false;
+  if (missesContactCircle(rounded.circumcentre, rounded.circumradius, c, n, a)) return {Rejection::OutsideCircle};
 
   geom.tangent1 = n.unitOrthogonal();
   geom.tangent2 = n.cross(geom.tangent1);
@@ -53,18 +67,18 @@ bool triangleSphereGeom(const RoundedMesh& mesh, int triangle, const ContactSphe
   for (int i = 0; i < 3; ++i) geom.nodes[i] = toPlane(mesh.vertices()[corners[i]]);
   geom.polygon = ConvexPolygon::triangle(geom.nodes[0], geom.nodes[1], geom.nodes[2]);
   if (isTriangle) {
-    for (int i = 0; i < 3; ++i) geom.partnerNodes[i] = toPlane(sphere.corners[i]);
+    for (int i = 0; i < 3; ++i) geom.partnerNodes[i] = toPlane(partner.corner(i));
     geom.polygon = geom.polygon.intersection(
         ConvexPolygon::triangle(geom.partnerNodes[0], geom.partnerNodes[1], geom.partnerNodes[2]));
   }
-  if (geom.polygon.empty()) return false;
+  if (geom.polygon.empty()) return {Rejection::EmptyPolygon};
 
   geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
   const Real hSq = geom.effectivePoint.squaredNorm();
-  if (!(hSq < a * a)) return false;
+  if (!(hSq < a * a)) return {Rejection::BeyondContactCircle};
 
   geom.triangle = triangle;
-  geom.partnerTriangle = sphere.triangle;
+  geom.partnerTriangle = partner.triangle();
   geom.centre = c;
   geom.normal = n;
   geom.radius = R;
@@ -73,7 +87,30 @@ bool triangleSphereGeom(const RoundedMesh& mesh, int triangle, const ContactSphe
   geom.effectiveOverlap = overlap - R1 - R2 + std::sqrt(std::max(R1 * R1 - hSq, Real(0))) +
                           std::sqrt(std::max(R2 * R2 - hSq, Real(0)));
   setRelativeVelocity(geom, motion);
-  return true;
+  return {Rejection::None};
+}
+
+}  // namespace
+
+ContactSphere contactSphere(const RoundedMesh& mesh2, int t, const Matrix3r& rotation, const Vector3r& translation) {
+  const MovedTriangle moved(PlacedTriangle{mesh2, t, rotation, translation});
+  ContactSphere sphere;
+  sphere.centre = moved.centre();
+  sphere.radius = moved.radius();
+  sphere.triangle = t;
+  sphere.normal = moved.normal();
+  for (int i = 0; i < 3; ++i) sphere.corners[i] = moved.corner(i);
+  return sphere;
+}
+
+GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const ContactSphere& sphere,
+                            const RelativeMotion& motion, PressureGeom& geom) {
+  return sphereGeom(mesh, triangle, GivenSphere{sphere}, motion, geom);
+}
+
+GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const PlacedTriangle& partner,
+                            const RelativeMotion& motion, PressureGeom& geom) {
+  return sphereGeom(mesh, triangle, MovedTriangle(partner), motion, geom);
 }
 
 }  // namespace roundedmesh

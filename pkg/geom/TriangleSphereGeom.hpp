@@ -11,8 +11,8 @@
 //                                   triangle 2 (3 to 6 corners; empty if they only touch)
 //   c_eff, h:                       the point of S closest to c, h = |c_eff - c|
 //   effective overlap (Eq. B.4):    delta_eff = delta_s - R1 - R2 + sqrt(R1^2 - h^2) + sqrt(R2^2 - h^2)
-// Returns false, leaving geom unspecified, unless the contact circle meets S (h < a): only then can the
-// pressure of Eq. 9 act. h < a < sqrt(2 R* delta_s) keeps delta_eff > 0 for overlaps small beside the radii.
+// Rejects the candidate (leaving geom unspecified) unless the contact circle meets S (h < a): only then can
+// the pressure of Eq. 9 act. h < a < sqrt(2 R* delta_s) keeps delta_eff > 0 for overlaps small beside the radii.
 #pragma once
 
 #include <array>
@@ -34,7 +34,19 @@ struct ContactSphere {
 // Body 2's rounded triangle t, moved into body 1's frame by x1 = rotation * x2 + translation.
 ContactSphere contactSphere(const RoundedMesh& mesh2, int t, const Matrix3r& rotation, const Vector3r& translation);
 
-bool triangleSphereGeom(const RoundedMesh& mesh, int triangle, const ContactSphere& sphere,
-                        const RelativeMotion& motion, PressureGeom& geom);
+// Body 2's rounded triangle as it lies in its own mesh, with the pose that places it in body 1's frame
+// (x1 = rotation * x2 + translation): what the engine's hot path passes, so that the corners are moved only
+// for candidates that pass the facing, overlap and circle tests.
+struct PlacedTriangle {
+  const RoundedMesh& mesh;
+  int triangle;
+  const Matrix3r& rotation;
+  const Vector3r& translation;
+};
+
+GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const ContactSphere& sphere,
+                            const RelativeMotion& motion, PressureGeom& geom);
+GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const PlacedTriangle& partner,
+                            const RelativeMotion& motion, PressureGeom& geom);
 
 }  // namespace roundedmesh

@@ -28,10 +28,7 @@ ConvexPolygon ConvexPolygon::rectangle(const Vector2r& centre, Real hx, Real hy)
   return r;
 }
 
-void ConvexPolygon::push(const Vector2r& p) {
-  if (size_ == kCapacity) throw std::logic_error("ConvexPolygon: more than 10 corners");
-  corners_[size_++] = p;
-}
+void ConvexPolygon::overflow() { throw std::logic_error("ConvexPolygon: more than 10 corners"); }
 
 Real ConvexPolygon::area() const {
   Real twice = 0;
@@ -70,25 +67,38 @@ Vector2r ConvexPolygon::closestPoint(const Vector2r& p) const {
 
 ConvexPolygon ConvexPolygon::clippedBy(const Vector2r& a, const Vector2r& b) const {
   ConvexPolygon out;
+  clipInto(a, b, out);
+  return out;
+}
+
+void ConvexPolygon::clipInto(const Vector2r& a, const Vector2r& b, ConvexPolygon& out) const {
+  out.size_ = 0;
+  if (size_ == 0) return;
   const Vector2r direction = b - a;
+  const Real first = cross2(direction, corners_[0] - a);
+  Real sp = first;
   for (int i = 0; i < size_; ++i) {
+    const bool last = i + 1 == size_;
     const Vector2r& p = corners_[i];
-    const Vector2r& q = corners_[(i + 1) % size_];
-    const Real sp = cross2(direction, p - a);
-    const Real sq = cross2(direction, q - a);
+    const Vector2r& q = corners_[last ? 0 : i + 1];
+    const Real sq = last ? first : cross2(direction, q - a);
     if (sp >= 0) out.push(p);
     // The edge crosses the line strictly: add the crossing point. Corners on the line are kept above,
     // so a crossing is only added between strictly opposite signs and never duplicates a corner.
     if ((sp > 0 && sq < 0) || (sp < 0 && sq > 0)) out.push(p + (sp / (sp - sq)) * (q - p));
+    sp = sq;
   }
-  return out;
 }
 
 ConvexPolygon ConvexPolygon::intersection(const ConvexPolygon& clip) const {
-  ConvexPolygon result = *this;
-  for (int i = 0; i < clip.size() && !result.empty(); ++i)
-    result = result.clippedBy(clip[i], clip[(i + 1) % clip.size()]);
-  return result;
+  ConvexPolygon buffers[2];
+  const ConvexPolygon* current = this;
+  for (int i = 0; i < clip.size() && !current->empty(); ++i) {
+    ConvexPolygon& next = buffers[i % 2];
+    current->clipInto(clip[i], clip[i + 1 < clip.size() ? i + 1 : 0], next);
+    current = &next;
+  }
+  return *current;
 }
 
 ConvexPolygon ConvexPolygon::translated(const Vector2r& offset) const {

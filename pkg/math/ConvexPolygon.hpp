@@ -22,7 +22,10 @@ class ConvexPolygon {
   int size() const { return size_; }
   bool empty() const { return size_ < 3; }
   const Vector2r& operator[](int i) const { return corners_[i]; }
-  void push(const Vector2r& p);
+  void push(const Vector2r& p) {
+    if (size_ == kCapacity) overflow();
+    corners_[size_++] = p;
+  }
 
   Real area() const;
   // True if p lies inside or on the boundary.
@@ -31,11 +34,15 @@ class ConvexPolygon {
   Vector2r closestPoint(const Vector2r& p) const;
   // Keeps the part on the left of the directed line from a to b (Sutherland-Hodgman step).
   ConvexPolygon clippedBy(const Vector2r& a, const Vector2r& b) const;
+  // The same into `out` (not this polygon), without a copy.
+  void clipInto(const Vector2r& a, const Vector2r& b, ConvexPolygon& out) const;
   // Intersection with another convex polygon.
   ConvexPolygon intersection(const ConvexPolygon& clip) const;
   ConvexPolygon translated(const Vector2r& offset) const;
 
  private:
+  [[noreturn]] static void overflow();
+
   std::array<Vector2r, kCapacity> corners_;
   int size_ = 0;
 };

@@ -70,11 +70,24 @@ class Engine {
   }
 
   bp::dict statistics() const {
+    const ContactStatistics& c = data_.statistics;
     bp::dict s;
-    s["body_pairs"] = data_.statistics.bodyPairs;
-    s["quadrature_contacts"] = data_.statistics.quadratureContacts;
-    s["direct_contacts"] = data_.statistics.directContacts;
-    s["sliding_contacts"] = data_.statistics.slidingContacts;
+    s["body_pairs"] = c.bodyPairs;
+    s["touching_pairs"] = c.touchingPairs;
+    s["candidates"] = c.narrowPhase.candidates;
+    s["rejected_not_facing"] = c.narrowPhase.notFacing;
+    s["rejected_no_overlap"] = c.narrowPhase.noOverlap;
+    s["rejected_outside_circle"] = c.narrowPhase.outsideCircle;
+    s["rejected_empty_polygon"] = c.narrowPhase.emptyPolygon;
+    s["rejected_beyond_contact_circle"] = c.narrowPhase.beyondContactCircle;
+    s["quadrature_contacts"] = c.quadratureContacts;
+    s["direct_contacts"] = c.directContacts;
+    s["sliding_contacts"] = c.slidingContacts;
+    s["neighbour_rebuilds"] = c.neighbourRebuilds;
+    s["candidate_rebuilds"] = c.candidateRebuilds;
+    s["broad_phase_ms"] = 1e3 * data_.times.broadPhase;
+    s["pairs_ms"] = 1e3 * data_.times.pairs;
+    s["reduction_ms"] = 1e3 * data_.times.reduction;
     return s;
   }
 

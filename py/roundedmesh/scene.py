@@ -256,12 +256,27 @@ def critical_timestep():
     return state.stability()[0] if state else math.inf
 
 
+_STATISTICS = ("body_pairs", "touching_pairs", "candidates", "rejected_not_facing", "rejected_no_overlap",
+               "rejected_outside_circle", "rejected_empty_polygon", "rejected_beyond_contact_circle",
+               "quadrature_contacts", "direct_contacts", "sliding_contacts", "neighbour_rebuilds",
+               "candidate_rebuilds", "broad_phase_ms", "pairs_ms", "reduction_ms")
+
+
 def statistics():
-    """Counts of the last contact step: body pairs whose bounds overlapped, triangle contacts in the
-    quadrature and direct regimes, and triangle contacts sliding (Eq. 21)."""
+    """The last contact step, stage by stage (doc/architecture.md):
+      body_pairs               pairs whose bounds overlapped (the broad phase's output)
+      touching_pairs           of those, pairs with at least one triangle contact
+      candidates               triangle pairs (and triangle-partner pairs) put through the narrow phase
+      rejected_*               how many of them each test rejected, in the order they run (Appendix B):
+                               not_facing (Eq. B.5), no_overlap (Eq. 10), outside_circle (projected
+                               circumcircle against the contact circle), empty_polygon (S), beyond_contact_circle
+      quadrature_contacts, direct_contacts   triangle contacts in each regime of Eq. 14
+      sliding_contacts         triangle contacts sliding (Eq. 21)
+      neighbour_rebuilds, candidate_rebuilds   lists kept between steps that were rebuilt (0 or 1; pairs)
+      broad_phase_ms, pairs_ms, reduction_ms   wall time of each stage of the C++ step
+    """
     state = _current_state()
-    return state.engine.statistics if state else {"body_pairs": 0, "quadrature_contacts": 0, "direct_contacts": 0,
-                                                  "sliding_contacts": 0}
+    return state.engine.statistics if state else dict.fromkeys(_STATISTICS, 0)
 
 
 def rounded_bodies():

@@ -149,3 +149,22 @@ def test_triangle_contacts_add_up_to_the_body_force():
     np.testing.assert_allclose(pairs["node_forces2"].sum(axis=1), pairs["normal_force"], rtol=1e-12)
     assert np.all(pairs["effective_overlap"] <= pairs["sphere_overlap"] + 1e-15)
     assert set(pairs["regime"]) <= {"quadrature", "direct"}
+
+
+# rm.statistics() reports the funnel of the last step: every candidate is either a triangle contact or rejected
+# by exactly one test (exact integer counts), and the stages' times are those of a step that ran.
+def test_statistics_report_the_funnel_of_the_last_step():
+    O.reset()
+    mesh = rm.Mesh.icosphere(0.025, 3)
+    rm.add_body(mesh, pos=(0, 0, 0), material=RUBBER)
+    rm.add_body(mesh, pos=(0.003, 0.002, 0.0495), ori=turned(0.7, (1, 2, 0)), material=RUBBER)
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(damping=0)]
+    O.dt = 0.05 * rm.critical_timestep()
+    O.run(3, True)
+    s = rm.statistics()
+    contacts = s["quadrature_contacts"] + s["direct_contacts"]
+    rejected = sum(v for k, v in s.items() if k.startswith("rejected_"))
+    assert s["body_pairs"] == 1 and s["touching_pairs"] == 1 and contacts > 3
+    assert s["candidates"] == contacts + rejected
+    assert s["candidate_rebuilds"] in (0, 1) and s["neighbour_rebuilds"] in (0, 1)
+    assert s["pairs_ms"] > 0 and s["broad_phase_ms"] >= 0 and s["reduction_ms"] >= 0

@@ -1,0 +1,144 @@
+#include "bench/RecordedScene.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "pkg/shape/BodyMesh.hpp"
+
+namespace roundedmesh {
+namespace {
+
+// S1's materials (doc/scenes.md): particles and box, normal damping A = 0.01 s, no friction.
+const HertzMaterial kParticle{1e6, 0.4, 2000, 0.01};
+const HertzMaterial kBox{5e6, 0.4, 2000, 0.01};
+
+[[noreturn]] void malformed(const std::string& path, const std::string& what) {
+  throw std::runtime_error(path + ": " + what);
+}
+
+std::ifstream open(const std::string& path, std::ios::openmode mode = std::ios::in) {
+  std::ifstream in(path, mode);
+  if (!in) malformed(path, "cannot be read (run scripts/record_s1_scene.py)");
+  return in;
+}
+
+// "vertices n", n lines of x y z; "triangles m", m lines of a b c; "radii m", m lines of r.
+BodyMesh readMesh(const std::string& path) {
+  std::ifstream in = open(path);
+  std::string line, word;
+  auto section = [&](const char* name) {
+    while (std::getline(in, line) && line.rfind("#", 0) == 0) {
+    }
+    std::istringstream header(line);
+    size_t count = 0;
+    if (!(header >> word >> count) || word != name) malformed(path, std::string("expected the section '") + name + "'");
+    return count;
+  };
+  std::vector<Vector3r> vertices(section("vertices"));
+  for (Vector3r& v : vertices)
+    if (!(in >> v.x() >> v.y() >> v.z())) malformed(path, "truncated vertices");
+  in.ignore(1);
+  std::vector<Triangle> triangles(section("triangles"));
+  for (Triangle& t : triangles)
+    if (!(in >> t[0] >> t[1] >> t[2])) malformed(path, "truncated triangles");
+  in.ignore(1);
+  std::vector<Real> radii(section("radii"));
+  for (Real& r : radii)
+    if (!(in >> r)) malformed(path, "truncated radii");
+  std::vector<Real> curvatures(radii.size());
+  for (size_t t = 0; t < radii.size(); ++t) curvatures[t] = 1 / radii[t];
+  const RoundedMesh mesh(std::move(vertices), std::move(triangles), radii);
+  return BodyMesh(mesh, Vector3r::Zero(), Quaternionr::Identity(),
+                  {curvatures, CurvatureSource::Prescribed, *std::max_element(radii.begin(), radii.end())});
+}
+
+BodyState state(const double* v) {
+  BodyState s;
+  s.position = Vector3r(v[0], v[1], v[2]);
+  s.orientation = Quaternionr(v[3], v[4], v[5], v[6]).normalized();
+  s.velocity = Vector3r(v[7], v[8], v[9]);
+  s.angularVelocity = Vector3r(v[10], v[11], v[12]);
+  return s;
+}
+
+}  // namespace
+
+void RecordedScene::setStates(ContactData& data, int frame) const {
+  data.resize(model);
+  if (frame < 0) {
+    data.bodyStates = bodyStates;
+    data.partnerStates = partnerStates;
+    return;
+  }
+  const std::vector<BodyState>& f = frames[frame];
+  std::copy(f.begin(), f.begin() + bodyStates.size(), data.bodyStates.begin());
+  data.partnerStates = partnerStates;
+  data.partnerStates[0] = f.back();
+}
+
+RecordedScene loadRecordedScene(const std::string& folder) {
+  RecordedScene scene;
+  const BodyMesh bear = readMesh(folder + "/gummy_bear.mesh");
+
+  const std::string settled = folder + "/s1_settled.csv";
+  std::ifstream in = open(settled);
+  std::string line;
+  bool header = false;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (!header) {
+      header = true;
+      continue;
+    }
+    std::istringstream fields(line);
+    std::string id, shape, value;
+    std::getline(fields, id, ',');
+    std::getline(fields, shape, ',');
+    double v[13];
+    for (double& x : v) {
+      if (!std::getline(fields, value, ',')) malformed(settled, "a row with fewer than 15 columns: " + line);
+      x = std::stod(value);
+    }
+    if (shape == "gummy_bear") {
+      scene.model.bodies.push_back(roundedBody(std::stoi(id), bear, kParticle));
+      scene.bodyStates.push_back(state(v));
+    } else if (shape.size() == 6 && shape.rfind("wall", 0) == 0) {
+      scene.model.partners.push_back({std::stoi(id), Wall{shape[4] - 'x', shape[5] == '+' ? 1 : -1}, kBox});
+      scene.partnerStates.push_back(state(v));
+    } else {
+      malformed(settled, "unknown shape '" + shape + "'");
+    }
+  }
+  if (scene.model.partners.empty() || std::get<Wall>(scene.model.partners[0].shape).axis != 2)
+    malformed(settled, "the floor (wallz+) must be the first wall");
+
+  const std::string shaking = folder + "/s1_shaking.bin";
+  std::ifstream bin = open(shaking, std::ios::binary);
+  const std::string magic = "roundedmesh trajectory 1\n";
+  std::string read(magic.size(), '\0');
+  std::int32_t bodies = 0, steps = 0;
+  double dt = 0;
+  bin.read(read.data(), read.size());
+  bin.read(reinterpret_cast<char*>(&bodies), 4).read(reinterpret_cast<char*>(&steps), 4).read(reinterpret_cast<char*>(&dt), 8);
+  if (!bin || read != magic || bodies != static_cast<int>(scene.bodyStates.size()) + 1 || steps < 1)
+    malformed(shaking, "not a trajectory of the settled packing's bodies and floor");
+  std::vector<std::int32_t> ids(bodies);
+  bin.read(reinterpret_cast<char*>(ids.data()), 4 * bodies);
+  std::vector<float> frame(13 * bodies);
+  for (int k = 0; k < steps; ++k) {
+    if (!bin.read(reinterpret_cast<char*>(frame.data()), 4 * frame.size())) malformed(shaking, "truncated");
+    std::vector<BodyState>& states = scene.frames.emplace_back(bodies);
+    for (int b = 0; b < bodies; ++b) {
+      double v[13];
+      for (int i = 0; i < 13; ++i) v[i] = frame[13 * b + i];
+      states[b] = state(v);
+    }
+  }
+  return scene;
+}
+
+}  // namespace roundedmesh

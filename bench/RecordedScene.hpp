@@ -1,0 +1,29 @@
+// Scene S1 as scripts/record_s1_scene.py recorded it (bench/data): 250 gummy bears and the box's five YADE
+// Walls, with S1's materials, as a ContactModel; the settled packing's states; and the states of the first
+// steps of shaking. Lets the benchmark and the tests run the complete contact step on a real packing, without
+// YADE or Python.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "pkg/engine/ContactData.hpp"
+
+namespace roundedmesh {
+
+struct RecordedScene {
+  ContactModel model;
+  std::vector<BodyState> bodyStates;     // settled packing, in the model's body order
+  std::vector<BodyState> partnerStates;  // the walls
+  // Shaking: frames[k] holds every body's state at step k, then the floor's (partner 0).
+  std::vector<std::vector<BodyState>> frames;
+
+  // Puts frame k (or the settled packing, for k < 0) into data.
+  void setStates(ContactData& data, int frame) const;
+};
+
+// Reads bench/data (ROUNDEDMESH_BENCH_DATA at build time, or `folder`). Throws std::runtime_error naming the
+// file on a missing or malformed one.
+RecordedScene loadRecordedScene(const std::string& folder = ROUNDEDMESH_BENCH_DATA);
+
+}  // namespace roundedmesh

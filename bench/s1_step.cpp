@@ -1,0 +1,129 @@
+// Google Benchmark of the complete C++ contact step on scene S1 with 250 gummy bears (bench/data, recorded
+// by scripts/record_s1_scene.py), without YADE or Python, and of its two per-contact stages alone:
+//   BM_S1Step/threads/moving/skin   one RoundedMeshEngine step; moving = 0: the settled packing again and again
+//                              (the lists kept between steps stay valid), 1: the recorded steps of shaking in
+//                              order, forth and back (the lists are rebuilt as the bodies move)
+//   BM_S1NarrowPhase           Ig2 over every pair's candidates of the settled packing (time per contact)
+//   BM_S1Load                  Law2, node forces and friction over its triangle contacts (time per contact)
+// Counters per step: body pairs, candidates, contacts, candidates per contact, list rebuilds, stage times.
+//   build/bench/roundedmesh_s1_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include "bench/RecordedScene.hpp"
+#include "pkg/engine/RoundedMeshEngine.hpp"
+
+namespace roundedmesh {
+namespace {
+
+const RecordedScene& scene() {
+  static const RecordedScene loaded = loadRecordedScene();
+  return loaded;
+}
+
+// Frames 0, 1, ..., n-1, n-2, ..., 1, 0, 1, ...: the recorded motion without a jump.
+int frameAt(long step, int frames) {
+  const long period = 2 * (frames - 1);
+  const long k = step % period;
+  return static_cast<int>(k < frames ? k : period - k);
+}
+
+void BM_S1Step(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(0));
+  const bool moving = state.range(1);
+  const int previous = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  ContactModel model = scene().model;
+  if (state.range(2) > 0) model.skins.candidatesMin = model.skins.candidatesMax = 1e-4 * state.range(2);
+  ContactData data;
+  scene().setStates(data, moving ? 0 : -1);
+  for (int warmup = 0; warmup < 2; ++warmup) RoundedMeshEngine(model, data);  // builds and trims the lists
+  ContactStatistics total;
+  StageTimes times;
+  long steps = 0;
+  for (auto _ : state) {
+    if (moving) scene().setStates(data, frameAt(++steps, static_cast<int>(scene().frames.size())));
+    RoundedMeshEngine(model, data);
+    total += data.statistics;
+    times.broadPhase += data.times.broadPhase;
+    times.pairs += data.times.pairs;
+    times.reduction += data.times.reduction;
+  }
+  omp_set_num_threads(previous);
+  const auto perStep = benchmark::Counter::kAvgIterations;
+  state.counters["body_pairs"] = benchmark::Counter(total.bodyPairs, perStep);
+  state.counters["touching_pairs"] = benchmark::Counter(total.touchingPairs, perStep);
+  state.counters["candidates"] = benchmark::Counter(total.narrowPhase.candidates, perStep);
+  state.counters["not_facing"] = benchmark::Counter(total.narrowPhase.notFacing, perStep);
+  state.counters["no_overlap"] = benchmark::Counter(total.narrowPhase.noOverlap, perStep);
+  state.counters["outside_circle"] = benchmark::Counter(total.narrowPhase.outsideCircle, perStep);
+  state.counters["empty_polygon"] = benchmark::Counter(total.narrowPhase.emptyPolygon, perStep);
+  state.counters["beyond_contact_circle"] = benchmark::Counter(total.narrowPhase.beyondContactCircle, perStep);
+  state.counters["contacts"] = benchmark::Counter(total.contacts(), perStep);
+  state.counters["candidates_per_contact"] = static_cast<double>(total.narrowPhase.candidates) / total.contacts();
+  state.counters["list_rebuilds"] = benchmark::Counter(total.candidateRebuilds, perStep);
+  state.counters["neighbour_rebuilds"] = benchmark::Counter(total.neighbourRebuilds, perStep);
+  state.counters["broad_ms"] = benchmark::Counter(1e3 * times.broadPhase, perStep);
+  state.counters["pairs_ms"] = benchmark::Counter(1e3 * times.pairs, perStep);
+  state.counters["reduction_ms"] = benchmark::Counter(1e3 * times.reduction, perStep);
+  state.SetLabel(std::string(moving ? "shaking" : "settled") + ", " + std::to_string(threads) + " thread(s)");
+}
+BENCHMARK(BM_S1Step)->ArgsProduct({{1, 2}, {0, 1}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+// A fixed skin of the candidate lists, in 1e-4 of the smaller volume-equivalent radius (0: the model's
+// default, which follows each pair's motion).
+BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {20, 40, 80, 160}})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The settled packing after one step: its pairs with their candidate lists, and every pair's contacts.
+struct SettledStep {
+  ContactData data;
+  std::vector<std::vector<PressureGeom>> geoms;  // per pair
+  long contacts = 0;
+
+  SettledStep() {
+    scene().setStates(data, -1);
+    RoundedMeshEngine(scene().model, data);
+    for (const BodyPair& pair : data.pairs) {
+      ContactStatistics statistics;
+      pairGeometry(scene().model, data, pair, geoms.emplace_back(), statistics, &data.candidateLists[pair.neighbour]);
+      contacts += static_cast<long>(geoms.back().size());
+    }
+  }
+};
+
+SettledStep& settled() {
+  static SettledStep step;
+  return step;
+}
+
+void BM_S1NarrowPhase(benchmark::State& state) {
+  SettledStep& step = settled();
+  std::vector<PressureGeom> geoms;
+  for (auto _ : state)
+    for (const BodyPair& pair : step.data.pairs) {
+      ContactStatistics statistics;
+      pairGeometry(scene().model, step.data, pair, geoms, statistics, &step.data.candidateLists[pair.neighbour]);
+      benchmark::DoNotOptimize(geoms.data());
+    }
+  state.counters["ns_per_contact"] =
+      benchmark::Counter(static_cast<double>(step.contacts) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
+                                                                        benchmark::Counter::kInvert);
+  state.counters["contacts"] = static_cast<double>(step.contacts);
+}
+BENCHMARK(BM_S1NarrowPhase)->Unit(benchmark::kMillisecond);
+
+void BM_S1Load(benchmark::State& state) {
+  SettledStep& step = settled();
+  for (auto _ : state)
+    for (size_t k = 0; k < step.data.pairs.size(); ++k)
+      benchmark::DoNotOptimize(pairLoad(scene().model, step.data, step.data.pairs[k], step.geoms[k]));
+  state.counters["ns_per_contact"] =
+      benchmark::Counter(static_cast<double>(step.contacts) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
+                                                                        benchmark::Counter::kInvert);
+  state.counters["contacts"] = static_cast<double>(step.contacts);
+}
+BENCHMARK(BM_S1Load)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace roundedmesh
+
+BENCHMARK_MAIN();

@@ -1,0 +1,101 @@
+#include "pkg/bound/TrianglePairCandidates.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace roundedmesh {
+namespace {
+
+// The corners of a triangle projected on the plane through c with normal n (axes u, v).
+std::array<Vector2r, 3> projected(const std::array<Vector3r, 3>& x, const Vector3r& c, const Vector3r& u, const Vector3r& v) {
+  std::array<Vector2r, 3> p;
+  for (int i = 0; i < 3; ++i) p[i] = Vector2r((x[i] - c).dot(u), (x[i] - c).dot(v));
+  return p;
+}
+
+// A lower bound of the distance between two plane triangles: the largest gap between their extents along
+// the normals of their edges (0 if they overlap).
+Real separation(const std::array<Vector2r, 3>& a, const std::array<Vector2r, 3>& b) {
+  Real gap = 0;
+  for (const std::array<Vector2r, 3>* edges : {&a, &b})
+    for (int i = 0; i < 3; ++i) {
+      const Vector2r e = (*edges)[(i + 1) % 3] - (*edges)[i];
+      const Real length = e.norm();
+      if (!(length > 0)) continue;
+      const Vector2r axis(-e.y() / length, e.x() / length);
+      Real minA = a[0].dot(axis), maxA = minA, minB = b[0].dot(axis), maxB = minB;
+      for (int k = 1; k < 3; ++k) {
+        minA = std::min(minA, a[k].dot(axis));
+        maxA = std::max(maxA, a[k].dot(axis));
+        minB = std::min(minB, b[k].dot(axis));
+        maxB = std::max(maxB, b[k].dot(axis));
+      }
+      gap = std::max({gap, minB - maxA, minA - maxB});
+    }
+  return gap;
+}
+
+// The distance from the origin to a plane triangle (0 inside).
+Real distanceFromOrigin(const std::array<Vector2r, 3>& t) {
+  const Real orientation = cross2(t[1] - t[0], t[2] - t[0]);
+  bool inside = true;
+  Real best = INFINITY;
+  for (int i = 0; i < 3; ++i) {
+    const Vector2r& a = t[i];
+    const Vector2r e = t[(i + 1) % 3] - a;
+    if (cross2(e, -a) * orientation < 0) inside = false;
+    const Real lengthSq = e.squaredNorm();
+    const Real s = lengthSq > 0 ? std::clamp(-a.dot(e) / lengthSq, Real(0), Real(1)) : Real(0);
+    best = std::min(best, (a + s * e).norm());
+  }
+  return inside ? 0 : best;
+}
+
+}  // namespace
+
+void trianglePairCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                            const Vector3r& translation, Real skin, Real depth, std::vector<TrianglePair>& pairs) {
+  pairs.clear();
+  const Real reach = depth + skin;
+  const Real turn = skin / mesh2.sphereBoundRadius();  // the largest rotation within the skin [rad]
+  auto corners = [](const RoundedMesh& mesh, int t, const Matrix3r& r, const Vector3r& x) {
+    const Triangle& c = mesh.triangles()[t];
+    return std::array<Vector3r, 3>{r * mesh.vertices()[c[0]] + x, r * mesh.vertices()[c[1]] + x, r * mesh.vertices()[c[2]] + x};
+  };
+  TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, reach, [&](int s, int t) {
+    const RoundedTriangle& p = mesh1.rounded(s);
+    const RoundedTriangle& q = mesh2.rounded(t);
+    const Vector3r qCircumcentre = rotation * q.circumcentre + translation;
+    const Real balls = p.circumradius + q.circumradius + reach;
+    if ((qCircumcentre - p.circumcentre).squaredNorm() > balls * balls) return;
+    const Vector3r d = rotation * q.sphereCentre + translation - p.sphereCentre;
+    const Real distance = d.norm();
+    const Real moved = skin * std::max(Real(1), q.sphereCentre.norm() / mesh2.sphereBoundRadius());
+    const Real overlap = p.radius + q.radius - distance;
+    if (overlap <= -moved) return;
+    if (p.normal.dot(d) <= -moved || (rotation * q.normal).dot(d) >= moved + turn * (distance + moved)) return;
+    // The contact circle now, and how far the motion can move it: its centre c = s_p + x n moves by at most
+    // moved (x) plus x times the turn of n (at most 2 moved / distance); its radius grows at most to a_max.
+    const Vector3r n = d / distance;
+    const Real x = ((distance - q.radius) * (distance + q.radius) + p.radius * p.radius) / (2 * distance);
+    const Vector3r c = p.sphereCentre + x * n;
+    const Real tilt = std::min(Real(2), 2 * moved / distance);
+    const Real aMax = std::sqrt(std::max(overlap + moved, Real(0)) * p.radius * q.radius / (p.radius + q.radius));
+    const Real shift = moved + std::abs(x) * tilt;
+    // Projections on the plane now; a point at distance l from c shifts in it by at most shift + l tilt, and
+    // the partner's corners also move by at most skin.
+    const Vector3r u = n.unitOrthogonal(), v = n.cross(u);
+    const std::array<Vector3r, 3> xp = corners(mesh1, s, Matrix3r::Identity(), Vector3r::Zero());
+    const std::array<Vector3r, 3> xq = corners(mesh2, t, rotation, translation);
+    Real far = 0;
+    for (int i = 0; i < 3; ++i) far = std::max({far, (xp[i] - c).norm(), (xq[i] - c).norm()});
+    const Real slack = shift + far * tilt + skin;
+    const std::array<Vector2r, 3> pp = projected(xp, c, u, v), pq = projected(xq, c, u, v);
+    // S = P' n Q' must meet the contact circle: both projections within a_max of c, and overlapping.
+    if (std::max(distanceFromOrigin(pp), distanceFromOrigin(pq)) > aMax + slack) return;
+    if (separation(pp, pq) > 2 * slack) return;
+    pairs.push_back({s, t});
+  });
+}
+
+}  // namespace roundedmesh

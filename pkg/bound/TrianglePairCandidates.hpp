@@ -1,0 +1,33 @@
+// Bound: the candidate triangle pairs of two rounded bodies, a Verlet list kept between steps. It holds every
+// triangle pair (s of mesh 1, t of mesh 2) that can be in contact, with an effective overlap of at most
+// `depth`, while every point of mesh 2 moves by at most `skin` from the pose it was built at
+// (x1 = rotation * x2 + translation). Why each filter is safe:
+//   A contact has its surface points q1 on cap s and q2 on cap t (Appendix B: the line along n12 through
+//   c_eff crosses both triangles, and leaves each sphere through its cap) with |q1 - q2| = delta_eff.
+//   Caps lie in their cap boxes (TriangleTree) and in the balls of radius rho about the circumcentres, so:
+//   (1) boxes:   the cap boxes come within depth + skin of each other (TriangleTree::queryPairs);
+//   (2) balls:   |cc_s - cc_t| <= rho_s + rho_t + depth + skin;
+//   (3) overlap: R_s + R_t - |s_s - s_t| > -m_t, where m_t bounds how far sphere centre t can move: a motion
+//                that moves mesh 2's bound (radius r2 about its origin) by at most skin turns it by at most
+//                skin / r2, which moves a centre at distance |s_t| by at most skin * max(1, |s_t| / r2);
+//   (4) facing (Eq. B.5) within the same motions: n_s . d > -m_t and n_t . d < m_t + (skin / r2)(|d| + m_t),
+//                d = s_t - s_s;
+//   (5) circle:  S = P' n Q' meets the contact circle, so both projected triangles come within a of c and
+//                overlap; tested on the plane of now, with a grown to its largest within the motion and every
+//                distance given the slack by which the motion can move c, tilt n and move the corners.
+// Input: the two meshes (body frames), mesh 2's pose in mesh 1's frame, skin and depth [m]. Output: the pairs.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "pkg/shape/RoundedMesh.hpp"
+
+namespace roundedmesh {
+
+using TrianglePair = std::array<int, 2>;
+
+void trianglePairCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                            const Vector3r& translation, Real skin, Real depth, std::vector<TrianglePair>& pairs);
+
+}  // namespace roundedmesh
