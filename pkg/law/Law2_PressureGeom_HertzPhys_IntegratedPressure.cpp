@@ -1,5 +1,7 @@
 #include "pkg/law/Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp"
 
+#include <cmath>
+
 #include "pkg/law/HertzPressure.hpp"
 #include "pkg/math/CirclePolygonArea.hpp"
 #include "pkg/math/DunavantRule.hpp"
@@ -21,21 +23,30 @@ bool useDirectRegime(const PressureGeom& geom, const PressureOptions& options) {
   return M_PI * geom.contactRadius * geom.contactRadius < options.gamma * areaPerPoint;
 }
 
+// S clipped to the square [-a, a]^2 around c; S itself when it lies in the square already (clipping would
+// return its corners unchanged).
+ConvexPolygon clippedToSquare(const ConvexPolygon& polygon, Real a) {
+  for (int i = 0; i < polygon.size(); ++i)
+    if (std::abs(polygon[i].x()) > a || std::abs(polygon[i].y()) > a)
+      return polygon.intersection(ConvexPolygon::rectangle(Vector2r::Zero(), a, a));
+  return polygon;
+}
+
 NormalLoad integrateByQuadrature(const PressureGeom& geom, const HertzPressure& pressure) {
   NormalLoad load{0, Vector2r::Zero(), Regime::Quadrature};
   // The pressure is zero outside the circle: integrating over S clipped to the circle's square gives the same
   // integral with every quadrature point where the pressure is.
-  const Real a = geom.contactRadius;
-  const ConvexPolygon s = geom.polygon.intersection(ConvexPolygon::rectangle(Vector2r::Zero(), a, a));
+  const ConvexPolygon s = clippedToSquare(geom.polygon, geom.contactRadius);
+  const QuadratureColumns& q = dunavant8Columns();
   for (int j = 1; j + 1 < s.size(); ++j) {
     const Vector2r &p0 = s[0], &p1 = s[j], &p2 = s[j + 1];
     const Real area = 0.5 * cross2(p1 - p0, p2 - p0);
-    for (const QuadraturePoint& q : kDunavant8) {
-      const Vector2r r = q.l1 * p0 + q.l2 * p1 + q.l3 * p2;
-      const Real dF = area * q.weight * pressure.at(r.squaredNorm());
-      load.force += dF;
-      load.moment += dF * leverTimesNormal(r);
-    }
+    const QuadratureColumn x = q.l1 * p0.x() + q.l2 * p1.x() + q.l3 * p2.x();
+    const QuadratureColumn y = q.l1 * p0.y() + q.l2 * p1.y() + q.l3 * p2.y();
+    const QuadratureColumn dF = (area * pressure.amplitude) * q.weight *
+                                (pressure.contactRadiusSq - (x.square() + y.square())).max(Real(0)).sqrt();
+    load.force += dF.sum();
+    load.moment += leverTimesNormal(Vector2r((dF * x).sum(), (dF * y).sum()));
   }
   return load;
 }

@@ -47,12 +47,13 @@ bool ConvexPolygon::contains(const Vector2r& p) const {
 }
 
 Vector2r ConvexPolygon::closestPoint(const Vector2r& p) const {
-  if (contains(p)) return p;
-  Vector2r best = corners_[0];
+  // p lies outside exactly the edges it sees (negative side); the closest point is on one of them.
+  Vector2r best = p;
   Real bestDistanceSq = std::numeric_limits<Real>::infinity();
   for (int i = 0; i < size_; ++i) {
     const Vector2r& a = corners_[i];
-    const Vector2r edge = corners_[(i + 1) % size_] - a;
+    const Vector2r edge = corners_[i + 1 < size_ ? i + 1 : 0] - a;
+    if (!(cross2(edge, p - a) < 0)) continue;
     const Real lengthSq = edge.squaredNorm();
     const Real t = lengthSq > 0 ? std::clamp((p - a).dot(edge) / lengthSq, Real(0), Real(1)) : Real(0);
     const Vector2r q = a + t * edge;

@@ -36,4 +36,24 @@ inline constexpr std::array<QuadraturePoint, 16> kDunavant8 = [] {
   }};
 }();
 
+// The same rule by columns, as Eigen arrays, so that the quadrature runs on all points at once (SIMD).
+using QuadratureColumn = Eigen::Array<Real, 16, 1>;
+struct QuadratureColumns {
+  QuadratureColumn l1, l2, l3, weight;
+};
+
+inline const QuadratureColumns& dunavant8Columns() {
+  static const QuadratureColumns columns = [] {
+    QuadratureColumns c;
+    for (size_t i = 0; i < kDunavant8.size(); ++i) {
+      c.l1[i] = kDunavant8[i].l1;
+      c.l2[i] = kDunavant8[i].l2;
+      c.l3[i] = kDunavant8[i].l3;
+      c.weight[i] = kDunavant8[i].weight;
+    }
+    return c;
+  }();
+  return columns;
+}
+
 }  // namespace roundedmesh
