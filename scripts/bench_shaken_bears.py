@@ -1,4 +1,4 @@
-"""Whole-step cost of scene S1 (shared/scenes.md) with 250 gummy bears, on the settled packing: the bears
+"""Whole-step cost of scene S1 (doc/scenes.md) with 250 gummy bears, on the settled packing: the bears
 fall from S1's lattice into the box (standing still: no shaking), settle, and the settled scene is saved;
 then the median wall time per complete YADE step is measured with 1 and 2 OpenMP threads, each in a fresh
 process started from the saved scene, with the share of every engine (ForceResetter, the roundedmesh
@@ -44,7 +44,7 @@ from roundedmesh import benchmarking
 from roundedmesh.benchmarking import machine
 from roundedmesh.progress import Progress
 
-# Scene S1 (shared/scenes.md); the box stands still here.
+# Scene S1 (doc/scenes.md); the box stands still here.
 RADIUS = 0.025                      # volume-equivalent radius [m]
 HALF_BASE = 0.20                    # the box's inner base is 0.40 m x 0.40 m, centred on the z axis
 LATTICE = (-0.15, -0.05, 0.05, 0.15)

@@ -1,5 +1,7 @@
 """roundedmesh: triangulated rounded bodies in YADE, with contact forces from the integrated Hertz
-pressure (Smeets et al., CMAME 277 (2014) 219-238).
+pressure of B. Smeets, T. Odenthal, J. Keresztes, S. Vanmaercke, P. Van Liedekerke, E. Tijskens, W. Saeys,
+H. Van Oosterwyck and H. Ramon, "Modeling contact interactions between triangulated rounded bodies for the
+discrete element method", Comput. Methods Appl. Mech. Engrg. 277 (2014) 219-238, doi:10.1016/j.cma.2014.04.017.
 
     import roundedmesh as rm
     mesh = rm.Mesh.icosphere(0.025, 3)
@@ -9,16 +11,20 @@ pressure (Smeets et al., CMAME 277 (2014) 219-238).
     rm.assign_material(floor, rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=1e-3))
     O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
 
-See doc/user-guide.md.
+The submodules come with the package (rm.export, rm.progress, rm.scenes, rm.analytic, rm.validation,
+rm.benchmarking, rm.shapes, rm.contact, rm.scene, rm.meshfiles). See doc/user-guide.md.
 """
 from . import _yade  # noqa: F401  (YADE's converters must exist before _core returns vectors)
+from . import analytic, benchmarking, contact, export, meshfiles, progress, scene, scenes, shapes, validation  # noqa: F401
 from ._core import HertzMaterial, Mesh, plane_contact
 from .contact import body_contact, sphere_contact, triangle_contacts
 from .scene import _restore_mesh  # noqa: F401  (Mesh.__reduce__ names it as roundedmesh._restore_mesh)
-from .scene import add_body, assign_material, critical_timestep, engine, rounded_bodies, statistics
+from .scene import (add_body, assign_material, critical_timestep, engine, rounded_bodies, set_material,
+                    statistics)
 from .shapes import reference_shape
 
+Mesh.load = staticmethod(meshfiles.load)
 Mesh.reference_shape = staticmethod(reference_shape)
 
-__all__ = ["Mesh", "HertzMaterial", "add_body", "assign_material", "engine", "critical_timestep", "statistics",
-           "rounded_bodies", "plane_contact", "body_contact", "sphere_contact", "triangle_contacts"]
+__all__ = ["Mesh", "HertzMaterial", "add_body", "assign_material", "set_material", "engine", "critical_timestep",
+           "statistics", "rounded_bodies", "plane_contact", "body_contact", "sphere_contact", "triangle_contacts"]

@@ -1,10 +1,10 @@
 """Rounded bodies in a YADE scene: creating them, naming their contact partners, and the engine that
 adds their contact forces each step.
 
-A rounded body is an ordinary YADE Body with a bare Shape that YADE's own engines ignore: YADE owns its mass, inertia, position,
-orientation and velocities and moves it with NewtonIntegrator (also as a member of a clump); this module
-owns its mesh and material. YADE Walls, Boxes, Facets and Spheres become contact partners when given a
-HertzMaterial with assign_material.
+A rounded body is an ordinary YADE Body with a bare Shape and no bound, which YADE's colliders and
+dispatchers skip: YADE owns its mass, inertia, position, orientation and velocities and moves it with
+NewtonIntegrator (also as a member of a clump); this module owns its mesh and material. YADE Walls, Boxes,
+Facets and Spheres become contact partners when given a HertzMaterial with assign_material.
 
 What this module knows about a scene is kept in the scene, in O.tags, so that O.save/O.load,
 O.saveTmp/O.loadTmp and the GUI's reload keep the rounded bodies:
@@ -15,10 +15,12 @@ O.saveTmp/O.loadTmp and the GUI's reload keep the rounded bodies:
 YADE cannot delete a tag; an entry set to "" is a deleted one.
 """
 import base64
+import functools
 import hashlib
 import json
 import math
 import numbers
+import sys
 import uuid
 import warnings
 import weakref
@@ -174,14 +176,30 @@ def _materials(kind):
             for i, r in _tags_named(kind).items()}
 
 
-def _require_one_deformable(material, others, name, other_kind):
+def _require_one_deformable(material, others, name, other_kind, exclude=None):
     """Two rigid bodies (young = inf) have no Hertz contact: refuse a rigid material if a rigid one is
-    already among those it can touch (`others`: 'body', 'partner' or both)."""
+    already among those it can touch (`others`: 'body', 'partner' or both; body `exclude` is the one whose
+    material changes)."""
     if math.isinf(material.young):
-        rigid = sorted(i for kind in others for i, m in _materials(kind).items() if math.isinf(m.young))
+        rigid = sorted(i for kind in others for i, m in _materials(kind).items()
+                       if math.isinf(m.young) and i != exclude)
         if rigid:
             raise ValueError(f"{name}: a rigid material (young=inf) cannot touch the rigid {other_kind} "
                              f"{', '.join(map(str, rigid))}; give one side a finite modulus")
+
+
+_YADE_LABEL = "roundedmesh"
+
+
+def _yade_material(material):
+    """The YADE Material of a rounded body: O.bodies.clump needs one, and its label tells the engine that the
+    body's material is still the HertzMaterial it knows (see _check_yade_materials)."""
+    return Material(density=material.density, label=_YADE_LABEL)
+
+
+def _set_mass(body, mesh, material):
+    body.state.mass = material.density * mesh.volume
+    body.state.inertia = Vector3(*(material.density * mesh.inertia))
 
 
 # --- the public API ---------------------------------------------------------------------------------------
@@ -198,13 +216,18 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None):
     _require_one_deformable(material, ("body", "partner"), "material", "bod(ies)")
 
     body = Body()
-    # A bare Shape and Material: YADE's collider has no bound for the one and ignores the body, while
-    # O.bodies.clump needs both to take the body as a member (it then uses the state's mass and inertia).
+    # O.bodies.clump needs a shape and a material on every member (it dereferences both, then uses the
+    # state's mass and inertia). The bare Shape has no class index, so a bound dispatcher that meets it aborts
+    # YADE ("No functor for type Shape"). bounded=False, saved with the body, makes BoundDispatcher (run by
+    # the colliders) skip the body before it looks for a functor: the body gets no bound, the collider never
+    # pairs it and YADE's InteractionLoop never sees it, whenever the collider was made. A groupMask of 0
+    # would not do (the bound is still dispatched), nor a stock shape with a bound functor (the collider would
+    # pair the body with its neighbours, and a stock Ig2 functor would add YADE's contact law to ours).
     body.shape = Shape()
-    body.material = Material(density=material.density, label="roundedmesh")
+    body.bounded = False
+    body.material = _yade_material(material)
     body.aspherical = True
-    body.state.mass = material.density * mesh.volume
-    body.state.inertia = Vector3(*(material.density * mesh.inertia))
+    _set_mass(body, mesh, material)
     body.state.pos = pos
     body.state.ori = ori
     key = _store_mesh(mesh)
@@ -216,15 +239,44 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None):
 
 def assign_material(body_id, material):
     """Makes the YADE-native body `body_id` (a Wall, Box, Facet or Sphere) a contact partner of the rounded
-    bodies, made of `material`. Assigning again replaces the material. Partners touch rounded bodies only:
-    contacts among them stay with YADE's own engines, if the scene has any."""
+    bodies, made of `material`. Assigning again replaces the material, and a rounded body's material is
+    changed as by set_material. Partners touch rounded bodies only: contacts among them stay with YADE's own
+    engines, if the scene has any."""
     material = _require_material(material, "material")
     body = _existing_body(body_id, "body_id")
     if _tag(f"body.{body.id}"):
-        raise ValueError(f"body_id: body {body.id} is a rounded body; its material is the one given to add_body")
+        return set_material(body.id, material)
     partner_kind(body)
     _require_one_deformable(material, ("body",), "material", "rounded bod(ies)")
     _set_tag(f"partner.{body.id}", json.dumps(_material_record(material)))
+    _new_revision()
+
+
+def set_material(body_id, material):
+    """Gives the rounded body or contact partner `body_id` the HertzMaterial `material` from the next step
+    on, e.g. friction after settling without it. A rounded body's mass and inertia follow the new density
+    (refused for a clump member, whose mass is part of its clump's); a partner's mass stays YADE's. On bad
+    input nothing changes."""
+    material = _require_material(material, "material")
+    body = _existing_body(body_id, "body_id")
+    record = _tag(f"body.{body.id}")
+    if record:
+        r = json.loads(record)
+        if material.density != r["material"][2] and body.isClumpMember:
+            raise ValueError(f"material: body {body.id} is a member of clump {body.clumpId}, whose mass and inertia "
+                             f"were fixed by O.bodies.clump; a new density ({material.density:g} instead of "
+                             f"{r['material'][2]:g} kg/m^3) must be given before clumping")
+        _require_one_deformable(material, ("body", "partner"), "material", "bod(ies)", exclude=body.id)
+        body.material = _yade_material(material)
+        if material.density != r["material"][2]:
+            _set_mass(body, _load_mesh(r["mesh"]), material)
+        _set_tag(f"body.{body.id}", json.dumps({**r, "material": _material_record(material)}))
+    elif _tag(f"partner.{body.id}"):
+        _require_one_deformable(material, ("body",), "material", "rounded bod(ies)")
+        _set_tag(f"partner.{body.id}", json.dumps(_material_record(material)))
+    else:
+        raise ValueError(f"body_id: body {body.id} is neither a rounded body nor a contact partner; "
+                         "make a Wall, Box, Facet or Sphere a partner with assign_material")
     _new_revision()
 
 
@@ -375,6 +427,73 @@ def _forget(body_ids):
     _new_revision()
 
 
+def _check_yade_materials(state):
+    """A rounded body whose YADE material was replaced by hand (body.material = FrictMat(...)) would go on
+    with the HertzMaterial the engine knows, silently: refuse the step instead, naming the way that works."""
+    for body_id in state.body_ids:
+        body = _body_or_none(body_id)
+        if body is not None and (body.material is None or body.material.label != _YADE_LABEL):
+            found = "removed" if body.material is None else \
+                f"replaced by a {type(body.material).__name__} (label {body.material.label!r})"
+            raise ValueError(f"rounded body {body_id}: its YADE material was {found}; a rounded body's contact "
+                             f"material is a roundedmesh.HertzMaterial, changed with roundedmesh.set_material("
+                             f"{body_id}, material)")
+
+
+def _stop_the_run(step):
+    """Runs `step` so that an error stops the run with a message that names its cause, and no traceback.
+
+    YADE's PyRunner prints the traceback of an exception leaving its command (PyErr_Print), then throws it on
+    as "PyRunner error ... STACK TRACE ..."; the ThreadRunner of O.run logs that as a FATAL ERROR, and
+    O.run(n, True) or O.step() raise it once more as a RuntimeError. The exception has to leave the
+    command, since only that aborts the step before NewtonIntegrator moves the bodies without their contact
+    forces (O.pause() would let the step finish) and makes a script's O.run(n, True) raise instead of
+    carrying on. What can go is the traceback through roundedmesh: the error is raised with a message that
+    stands alone, and the excepthook that PyErr_Print calls for it prints nothing and drops the traceback
+    that YADE formats into its message. The hook is restored as soon as it has run."""
+    @functools.wraps(step)
+    def stopping_step(**options):
+        try:
+            state = _current_state()
+            if state is not None:
+                _check_yade_materials(state)
+            step(**options)
+        except Exception as cause:
+            if getattr(cause, "stops_the_run", False):  # from the step's own retry after erased bodies
+                raise
+            error = RuntimeError(f"roundedmesh stopped the run at iteration {O.iter}: {cause}")
+            error.stops_the_run = True
+            _rewind_engines()
+            _quiet_in_pyrunner(error)
+            raise error from None
+    return stopping_step
+
+
+def _rewind_engines():
+    """PyRunner, a PeriodicEngine, has counted the failed step as run (iterLast = O.iter) and would skip the
+    step when the user runs again, which would then go by without contact forces: make it due again."""
+    for e in O.engines:
+        if isinstance(e, PyRunner) and e.command.startswith(_ENGINE_COMMAND):
+            e.iterLast = O.iter - max(e.iterPeriod, 1)
+
+
+def _quiet_in_pyrunner(error):
+    previous = sys.excepthook
+
+    def hook(kind, value, traceback):
+        if sys.excepthook is hook:
+            sys.excepthook = previous
+        # Only PyRunner's PyErr_Print, whose outermost frame is its command "<string>", is kept quiet: the same
+        # error escaping a script (a direct call of step) is printed as usual.
+        if value is error and traceback is not None and traceback.tb_frame.f_code.co_filename == "<string>":
+            sys.last_traceback = None
+            return
+        previous(kind, value, traceback)
+
+    sys.excepthook = hook
+
+
+@_stop_the_run
 def step(**options):
     """One contact step on the current scene; run by the engine's PyRunner."""
     state = _current_state()

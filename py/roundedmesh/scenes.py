@@ -1,4 +1,4 @@
-"""The reference scenes of shared/scenes.md that this package can build so far, shared by the tests, the
+"""The reference scenes of doc/scenes.md that this package can build so far, shared by the tests, the
 demo and the benchmarks. Values the scene list leaves open are ours and documented in doc/validation.md.
 
 S2 -- static indentation of a meshed sphere against a rigid plane:

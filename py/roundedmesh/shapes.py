@@ -1,6 +1,6 @@
-"""The paper's reference particle shapes (pear, gummy bear), defined in shapes.json (a copy of the
-project's shared definitions): smooth blends of spheres and capsules, meshed with CGAL and scaled to the
-volume-equivalent radius given there (0.025 m)."""
+"""The paper's reference particle shapes (pear, gummy bear; doc/scenes.md, S1), defined in shapes.json:
+smooth blends of spheres and capsules, meshed with CGAL and scaled to the volume-equivalent radius given
+there (0.025 m)."""
 import functools
 import json
 import math

@@ -1,4 +1,4 @@
-"""Body-body validation scenes of shared/scenes.md (paper Sections 3.1.1 and 3.2, Figs. 3, 7 and 8): two
+"""Body-body validation scenes of doc/scenes.md (paper Sections 3.1.1 and 3.2, Figs. 3, 7 and 8): two
 rounded bodies pressed together along the global z axis, force against overlap, compared with Hertz. Values
 the scene list leaves open are ours and marked (ours); doc/validation.md lists them.
 

@@ -1,6 +1,9 @@
 """Bad input gets an exception that names the argument, and the scene is left as it was."""
 import math
+import os
 import pickle
+import subprocess
+import textwrap
 
 import numpy as np
 import pytest
@@ -97,7 +100,7 @@ def test_radius_errors_name_the_argument():
 
 
 def test_assign_material_checks_the_body_and_the_material():
-    sphere_id = rm.add_body(rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 1), material=RUBBER)
+    rm.add_body(rm.Mesh.icosphere(0.02, 1), pos=(0, 0, 1), material=RUBBER)
     polyhedron = O.bodies.append(polyhedra_utils.polyhedra(PolyhedraMat(), size=(0.1, 0.1, 0.1)))
     wall = O.bodies.append(utils.wall(0, axis=2))
     before = scene_snapshot()
@@ -107,8 +110,6 @@ def test_assign_material_checks_the_body_and_the_material():
         rm.assign_material(wall, None)
     with pytest.raises(ValueError, match=f"body {polyhedron}: a Polyhedra cannot be"):
         rm.assign_material(polyhedron, RUBBER)
-    with pytest.raises(ValueError, match=f"body {sphere_id} is a rounded body"):
-        rm.assign_material(sphere_id, RUBBER)
     for not_an_id in (True, -1, 1.0, "1"):
         with pytest.raises(TypeError, match="body_id: expected a body id"):
             rm.assign_material(not_an_id, RUBBER)
@@ -232,3 +233,37 @@ def test_material_and_mesh_pickle_round_trip():
     np.testing.assert_array_equal(copy.vertices, mesh.vertices)
     np.testing.assert_array_equal(copy.centroid, mesh.centroid)
     assert pickle.loads(pickle.dumps(RUBBER)) == RUBBER
+
+
+# An error in the engine stops the run and reaches the user without a traceback through roundedmesh or
+# YADE's PyRunner: YADE reports it as it reports its own engines' errors (ThreadRunner's FATAL ERROR line for
+# O.run; nothing for O.step), and the caller gets it as the RuntimeError of O.run(n, True) or O.step(). Left
+# uncaught, it ends the script with the script's own one-frame traceback. Run in a new process to see what a
+# user sees on the terminal.
+def test_an_engine_error_is_reported_without_tracebacks(tmp_path):
+    script = tmp_path / "too_large_a_step.py"
+    script.write_text(textwrap.dedent("""
+        import roundedmesh as rm
+        from yade import O
+        from roundedmesh.scenes import build_bouncing_sphere
+        build_bouncing_sphere(1)
+        O.dt = 1.5 * rm.critical_timestep()
+        for run in (lambda: O.run(5, True), O.step):
+            try:
+                run()
+            except RuntimeError as error:
+                print("CAUGHT", str(error).count("roundedmesh stopped the run at iteration 0: O.dt = "))
+        print("ITERATION", O.iter)
+        O.run(5, True)
+    """))
+    out = subprocess.run(["/usr/bin/python3", str(script)], capture_output=True, text=True, timeout=120,
+                         env=os.environ)
+    assert out.returncode == 1
+    assert "CAUGHT 2\nCAUGHT 2\nITERATION 0\n" in out.stdout, out.stdout + out.stderr
+    # Once for each O.run, in YADE's FATAL ERROR report; the uncaught one once more with its traceback.
+    assert out.stderr.count("FATAL ERROR") == 2, out.stderr
+    assert out.stderr.count("Traceback") == 1, out.stderr
+    traceback = out.stderr[out.stderr.index("Traceback"):]
+    assert 'too_large_a_step.py", line 13, in <module>\n    O.run(5, True)\nRuntimeError: PyRunner error.' in traceback
+    assert "roundedmesh/scene.py" not in out.stderr
+    assert "stability limit" in traceback and "reduce O.dt" in traceback

@@ -32,3 +32,17 @@ def test_in_debian_python_after_import_yade(clean_environment):
     out = subprocess.run(["/usr/bin/python3", "-c", "import yade; " + CHECK], capture_output=True, text=True,
                          timeout=120, env=clean_environment)
     assert "RM_OK (42, 3)" in out.stdout, out.stdout + out.stderr
+
+
+# `import roundedmesh as rm` is enough for every submodule: rm.export.VtkSeries, rm.scenes.S3, ... Checked in a
+# new process, since this one has imported them all already, against the package's own files so that a new
+# module is covered too.
+def test_every_submodule_comes_with_the_package():
+    import roundedmesh
+    folder = os.path.dirname(roundedmesh.__file__)
+    names = sorted(f[:-3] for f in os.listdir(folder) if f.endswith(".py") and not f.startswith("_"))
+    assert {"export", "progress", "scenes", "analytic", "validation", "benchmarking", "shapes"} <= set(names)
+    script = f"import roundedmesh as rm; print('MISSING', [n for n in {names!r} if not hasattr(rm, n)])"
+    out = subprocess.run(["/usr/bin/python3", "-c", script], capture_output=True, text=True, timeout=120,
+                         env=os.environ)
+    assert "MISSING []" in out.stdout, out.stdout + out.stderr

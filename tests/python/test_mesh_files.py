@@ -3,6 +3,7 @@ and every other defect raises an error naming the file, the defect and where it 
 tests/data, written by tests/data/make_meshes.py."""
 import math
 import os
+import warnings
 
 import numpy as np
 import pytest
@@ -40,6 +41,30 @@ def test_scale_converts_units():
     assert millimetres.volume == pytest.approx(1.5 * 0.75 * 4 / 3 * 1e-9, rel=1e-14)
     with pytest.raises(ValueError, match="scale must be positive"):
         rm.Mesh.load(data("octahedron.obj"), scale=-1.0)
+
+
+# The octahedron (semi-axes 1.5, 1, 0.75 m; volume-equivalent radius 0.71 m) scaled past the bounds of a DEM
+# particle, 1 um to 10 m: 30 times (21 m, what a body in millimetres read as metres looks like) and 1e-7 times
+# (71 nm). The body is loaded all the same.
+@pytest.mark.parametrize("scale", [30.0, 1e-7])
+def test_a_body_of_implausible_size_is_announced(scale):
+    path = data("octahedron.obj")
+    radius = (3 * 1.5 / (4 * math.pi)) ** (1 / 3) * scale
+    with pytest.warns(RuntimeWarning) as caught:
+        mesh = rm.Mesh.load(path, scale=scale)
+    assert len(caught) == 1
+    message = str(caught[0].message)
+    assert message.startswith(f"{path}: with scale={scale:g} the body's volume is {1.5 * scale ** 3:.6g} m^3")
+    assert f"radius of {radius:.3g} m" in message and "scale=0.001 for a file in millimetres" in message
+    assert caught[0].filename == __file__  # points at the caller's line, not at roundedmesh
+    assert mesh.volume == pytest.approx(1.5 * scale ** 3, rel=1e-12)
+
+
+@pytest.mark.parametrize("scale", [1.0, 0.001, 1e-5, 13.0])
+def test_a_body_of_plausible_size_is_loaded_quietly(scale):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        rm.Mesh.load(data("octahedron.obj"), scale=scale)
 
 
 @pytest.mark.parametrize("name", ["duplicate_vertices.obj", "inside_out.stl", "repeated_corner.obj"])

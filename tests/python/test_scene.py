@@ -23,7 +23,8 @@ def test_a_rounded_body_is_an_ordinary_aspherical_yade_body():
     ori = Quaternion(Vector3(1, 1, 0).normalized(), 0.3)
     body_id = rm.add_body(mesh, pos=(1, 2, 3), ori=ori, material=RUBBER)
     body = O.bodies[body_id]
-    assert type(body.shape).__name__ == "Shape" and body.bound is None and body.aspherical and body.dynamic
+    assert type(body.shape).__name__ == "Shape" and body.bound is None and not body.bounded
+    assert body.aspherical and body.dynamic and body.material.label == "roundedmesh"
     assert body.state.mass == pytest.approx(RUBBER.density * mesh.volume, rel=1e-14)
     np.testing.assert_allclose(np.array(body.state.inertia), RUBBER.density * mesh.inertia, rtol=1e-14)
     assert body.state.pos == Vector3(1, 2, 3)
