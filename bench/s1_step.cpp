@@ -62,6 +62,7 @@ void BM_S1Step(benchmark::State& state) {
   state.counters["contacts"] = benchmark::Counter(total.contacts(), perStep);
   state.counters["candidates_per_contact"] = static_cast<double>(total.narrowPhase.candidates) / total.contacts();
   state.counters["list_rebuilds"] = benchmark::Counter(total.candidateRebuilds, perStep);
+  state.counters["near_rebuilds"] = benchmark::Counter(total.nearRebuilds, perStep);
   state.counters["neighbour_rebuilds"] = benchmark::Counter(total.neighbourRebuilds, perStep);
   state.counters["broad_ms"] = benchmark::Counter(1e3 * times.broadPhase, perStep);
   state.counters["pairs_ms"] = benchmark::Counter(1e3 * times.pairs, perStep);

@@ -53,49 +53,75 @@ Real distanceFromOrigin(const std::array<Vector2r, 3>& t) {
 
 }  // namespace
 
-void trianglePairCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
-                            const Vector3r& translation, Real skin, Real depth, std::vector<TrianglePair>& pairs) {
+namespace {
+
+std::array<Vector3r, 3> corners(const RoundedMesh& mesh, int t, const Matrix3r& rotation, const Vector3r& translation) {
+  const Triangle& c = mesh.triangles()[t];
+  return {rotation * mesh.vertices()[c[0]] + translation, rotation * mesh.vertices()[c[1]] + translation,
+          rotation * mesh.vertices()[c[2]] + translation};
+}
+
+// Filters 2-4 for triangles p and q (q placed in mesh 1's frame). With `full`, also filter 5.
+bool canTouch(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& rotation,
+              const Vector3r& translation, Real skin, Real reach, bool full) {
+  const RoundedTriangle& p = mesh1.rounded(s);
+  const RoundedTriangle& q = mesh2.rounded(t);
+  const Real balls = p.circumradius + q.circumradius + reach;
+  if ((rotation * q.circumcentre + translation - p.circumcentre).squaredNorm() > balls * balls) return false;
+  const Vector3r d = rotation * q.sphereCentre + translation - p.sphereCentre;
+  const Real distance = d.norm();
+  const Real turn = skin / mesh2.sphereBoundRadius();  // the largest rotation within the skin [rad]
+  const Real moved = skin * std::max(Real(1), q.sphereCentre.norm() / mesh2.sphereBoundRadius());
+  const Real overlap = p.radius + q.radius - distance;
+  if (overlap <= -moved) return false;
+  if (p.normal.dot(d) <= -moved || (rotation * q.normal).dot(d) >= moved + turn * (distance + moved)) return false;
+  if (!full) return true;
+  // The contact circle now, and how far the motion can move it: its centre c = s_p + x n moves by at most
+  // moved (x) plus x times the turn of n (at most 2 moved / distance); its radius grows at most to a_max.
+  const Vector3r n = d / distance;
+  const Real x = ((distance - q.radius) * (distance + q.radius) + p.radius * p.radius) / (2 * distance);
+  const Vector3r c = p.sphereCentre + x * n;
+  const Real tilt = std::min(Real(2), 2 * moved / distance);
+  const Real aMax = std::sqrt(std::max(overlap + moved, Real(0)) * p.radius * q.radius / (p.radius + q.radius));
+  const Real shift = moved + std::abs(x) * tilt;
+  // Projections on the plane now; a point at distance l from c shifts in it by at most shift + l tilt, and
+  // the partner's corners also move by at most skin.
+  const Vector3r u = n.unitOrthogonal(), v = n.cross(u);
+  const std::array<Vector3r, 3> xp = corners(mesh1, s, Matrix3r::Identity(), Vector3r::Zero());
+  const std::array<Vector3r, 3> xq = corners(mesh2, t, rotation, translation);
+  Real far = 0;
+  for (int i = 0; i < 3; ++i) far = std::max({far, (xp[i] - c).norm(), (xq[i] - c).norm()});
+  const Real slack = shift + far * tilt + skin;
+  const std::array<Vector2r, 3> pp = projected(xp, c, u, v), pq = projected(xq, c, u, v);
+  // S = P' n Q' must meet the contact circle: both projections within a_max of c, and overlapping.
+  if (std::max(distanceFromOrigin(pp), distanceFromOrigin(pq)) > aMax + slack) return false;
+  return separation(pp, pq) <= 2 * slack;
+}
+
+}  // namespace
+
+void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                       const Vector3r& translation, Real skin, Real depth, std::vector<TrianglePair>& pairs) {
+  pairs.clear();
+  TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, depth + skin, [&](int s, int t) {
+    if (canTouch(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin, false)) pairs.push_back({s, t});
+  });
+}
+
+void touchableTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                            const Vector3r& translation, Real skin, Real depth, const std::vector<TrianglePair>& near,
+                            std::vector<TrianglePair>& pairs) {
   pairs.clear();
   const Real reach = depth + skin;
-  const Real turn = skin / mesh2.sphereBoundRadius();  // the largest rotation within the skin [rad]
-  auto corners = [](const RoundedMesh& mesh, int t, const Matrix3r& r, const Vector3r& x) {
-    const Triangle& c = mesh.triangles()[t];
-    return std::array<Vector3r, 3>{r * mesh.vertices()[c[0]] + x, r * mesh.vertices()[c[1]] + x, r * mesh.vertices()[c[2]] + x};
-  };
-  TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, reach, [&](int s, int t) {
-    const RoundedTriangle& p = mesh1.rounded(s);
-    const RoundedTriangle& q = mesh2.rounded(t);
-    const Vector3r qCircumcentre = rotation * q.circumcentre + translation;
-    const Real balls = p.circumradius + q.circumradius + reach;
-    if ((qCircumcentre - p.circumcentre).squaredNorm() > balls * balls) return;
-    const Vector3r d = rotation * q.sphereCentre + translation - p.sphereCentre;
-    const Real distance = d.norm();
-    const Real moved = skin * std::max(Real(1), q.sphereCentre.norm() / mesh2.sphereBoundRadius());
-    const Real overlap = p.radius + q.radius - distance;
-    if (overlap <= -moved) return;
-    if (p.normal.dot(d) <= -moved || (rotation * q.normal).dot(d) >= moved + turn * (distance + moved)) return;
-    // The contact circle now, and how far the motion can move it: its centre c = s_p + x n moves by at most
-    // moved (x) plus x times the turn of n (at most 2 moved / distance); its radius grows at most to a_max.
-    const Vector3r n = d / distance;
-    const Real x = ((distance - q.radius) * (distance + q.radius) + p.radius * p.radius) / (2 * distance);
-    const Vector3r c = p.sphereCentre + x * n;
-    const Real tilt = std::min(Real(2), 2 * moved / distance);
-    const Real aMax = std::sqrt(std::max(overlap + moved, Real(0)) * p.radius * q.radius / (p.radius + q.radius));
-    const Real shift = moved + std::abs(x) * tilt;
-    // Projections on the plane now; a point at distance l from c shifts in it by at most shift + l tilt, and
-    // the partner's corners also move by at most skin.
-    const Vector3r u = n.unitOrthogonal(), v = n.cross(u);
-    const std::array<Vector3r, 3> xp = corners(mesh1, s, Matrix3r::Identity(), Vector3r::Zero());
-    const std::array<Vector3r, 3> xq = corners(mesh2, t, rotation, translation);
-    Real far = 0;
-    for (int i = 0; i < 3; ++i) far = std::max({far, (xp[i] - c).norm(), (xq[i] - c).norm()});
-    const Real slack = shift + far * tilt + skin;
-    const std::array<Vector2r, 3> pp = projected(xp, c, u, v), pq = projected(xq, c, u, v);
-    // S = P' n Q' must meet the contact circle: both projections within a_max of c, and overlapping.
-    if (std::max(distanceFromOrigin(pp), distanceFromOrigin(pq)) > aMax + slack) return;
-    if (separation(pp, pq) > 2 * slack) return;
-    pairs.push_back({s, t});
-  });
+  const Matrix3r absRotation = rotation.cwiseAbs();
+  for (const TrianglePair& st : near) {
+    // Filter 1 again, for this skin and depth (transformedBox with |R| formed once).
+    const AlignedBox3r& b = mesh2.tree().triangleBox(st[1]);
+    const Vector3r centre = rotation * b.center() + translation;
+    const Vector3r half = (absRotation * (0.5 * b.sizes())).array() + reach;
+    if (!mesh1.tree().triangleBox(st[0]).intersects(AlignedBox3r(centre - half, centre + half))) continue;
+    if (canTouch(mesh1, st[0], mesh2, st[1], rotation, translation, skin, reach, true)) pairs.push_back(st);
+  }
 }
 
 }  // namespace roundedmesh

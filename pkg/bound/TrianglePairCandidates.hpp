@@ -1,5 +1,5 @@
-// Bound: the candidate triangle pairs of two rounded bodies, a Verlet list kept between steps. It holds every
-// triangle pair (s of mesh 1, t of mesh 2) that can be in contact, with an effective overlap of at most
+// Bound: the candidate triangle pairs of two rounded bodies, Verlet lists kept between steps. A list holds
+// every triangle pair (s of mesh 1, t of mesh 2) that can be in contact, with an effective overlap of at most
 // `depth`, while every point of mesh 2 moves by at most `skin` from the pose it was built at
 // (x1 = rotation * x2 + translation). Why each filter is safe:
 //   A contact has its surface points q1 on cap s and q2 on cap t (Appendix B: the line along n12 through
@@ -15,7 +15,10 @@
 //   (5) circle:  S = P' n Q' meets the contact circle, so both projected triangles come within a of c and
 //                overlap; tested on the plane of now, with a grown to its largest within the motion and every
 //                distance given the slack by which the motion can move c, tilt n and move the corners.
-// Input: the two meshes (body frames), mesh 2's pose in mesh 1's frame, skin and depth [m]. Output: the pairs.
+// Two levels, as a Verlet list with an outer shell: nearTrianglePairs searches the triangle trees with
+// filters 1-4 for a large skin, rarely; touchableTrianglePairs takes from such a list, with no search, the
+// pairs that pass all five filters for a small skin. A pose within the small skin of the inner list's, whose
+// pose is within (large - small) of the outer list's, is within the large skin of the outer list's.
 #pragma once
 
 #include <array>
@@ -27,7 +30,12 @@ namespace roundedmesh {
 
 using TrianglePair = std::array<int, 2>;
 
-void trianglePairCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
-                            const Vector3r& translation, Real skin, Real depth, std::vector<TrianglePair>& pairs);
+void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                       const Vector3r& translation, Real skin, Real depth, std::vector<TrianglePair>& pairs);
+
+// From `near` (a list for a larger skin and depth, built at a pose within (its skin - skin) of this one).
+void touchableTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                            const Vector3r& translation, Real skin, Real depth, const std::vector<TrianglePair>& near,
+                            std::vector<TrianglePair>& pairs);
 
 }  // namespace roundedmesh

@@ -11,6 +11,7 @@ ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& other)
   slidingContacts += other.slidingContacts;
   neighbourRebuilds += other.neighbourRebuilds;
   candidateRebuilds += other.candidateRebuilds;
+  nearRebuilds += other.nearRebuilds;
   return *this;
 }
 

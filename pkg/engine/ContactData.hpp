@@ -25,7 +25,8 @@ struct ContactStatistics {
   int directContacts = 0;      // triangle contacts in the direct regime
   int slidingContacts = 0;     // triangle contacts sliding (Eq. 21)
   int neighbourRebuilds = 0;   // rebuilds of the broad phase's neighbour list
-  int candidateRebuilds = 0;   // triangle-pair candidate lists rebuilt from the triangle trees
+  int candidateRebuilds = 0;   // triangle-pair candidate lists rebuilt (from their pair's near list)
+  int nearRebuilds = 0;        // near lists rebuilt from the triangle trees
 
   ContactStatistics& operator+=(const ContactStatistics& other);
   int contacts() const { return quadratureContacts + directContacts; }
@@ -53,18 +54,26 @@ struct PairResult {
   ContactStatistics statistics;
 };
 
-// Candidate triangle pairs (s of the body, t of the other body) of two rounded bodies: every pair that can
-// be in contact while every point of the other body moves by at most `skin` relative to the body from `rotation`,
-// `translation`, with an effective overlap of at most `depth` (TrianglePairCandidates.hpp).
+// Candidate triangle pairs (s of the body, t of the other body) of two rounded bodies, in two levels
+// (TrianglePairCandidates.hpp): `near`, from the triangle trees, holds every pair that can be in contact, with
+// an effective overlap of at most nearDepth, while every point of the other body moves by at most nearSkin
+// relative to the body from the pose nearRotation, nearTranslation; `pairs`, taken from `near`, does the same
+// for `skin`, `depth` and its own pose.
 struct CandidateList {
   bool built = false;
-  Real skin = 0;  // [m]
-  int age = 0;    // steps since the build
   Quaternionr rotation = Quaternionr::Identity();  // the other body's frame in the body's, at the build
   Vector3r translation = Vector3r::Zero();
-  Real depth = 0;    // the deepest effective overlap it holds every contact of [m]
+  Real skin = 0;     // [m]
+  Real depth = 0;    // [m]
+  int age = 0;       // steps since the build
   Real deepest = 0;  // the deepest effective overlap of the pair at its last evaluation [m]
   std::vector<std::array<int, 2>> pairs;
+
+  Quaternionr nearRotation = Quaternionr::Identity();
+  Vector3r nearTranslation = Vector3r::Zero();
+  Real nearSkin = 0;   // [m]; 0: not built
+  Real nearDepth = 0;  // [m]
+  std::vector<std::array<int, 2>> near;
 };
 
 struct ContactData {

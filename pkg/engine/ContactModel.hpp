@@ -48,12 +48,14 @@ struct Partner {
 // when a bound leaves its grown box. A pair's candidate triangle pairs hold for relative motions up to the
 // list's skin: the motion the pair made per step over its last list, times `candidateSteps`, within
 // [candidatesMin, candidatesMax] times the smaller radius of the pair, so that a list lasts about
-// candidateSteps steps whether the pair rests or flies (doc/physics.md, "Lists kept between steps").
+// candidateSteps steps whether the pair rests or flies. The near list it is taken from has `nearFactor`
+// times its skin (doc/physics.md, "Lists kept between steps").
 struct ListSkins {
   Real neighbours = 0.2;
   Real candidatesMin = 0.001;
   Real candidatesMax = 0.01;
   Real candidateSteps = 10;
+  Real nearFactor = 5;
 };
 
 struct ContactModel {

@@ -64,38 +64,55 @@ AlignedBox3r partnerBox(const PartnerShape& shape, const BodyState& state) {
                     shape);
 }
 
+// How far a point of body 2 may have moved relative to body 1 between two of its poses in body 1's frame:
+// the offset plus the turn times its bound radius (|R - R0| = 2 |vec(q0^-1 q)|).
+Real motionBound(const Quaternionr& fromRotation, const Vector3r& fromTranslation, const Quaternionr& rotation,
+                 const Vector3r& translation, Real boundRadius) {
+  return (translation - fromTranslation).norm() + 2 * (fromRotation.conjugate() * rotation).vec().norm() * boundRadius;
+}
+
 // The candidate list of two rounded bodies, brought up to date for body 2's pose in body 1's frame. A list
 // holds contacts 1.5 times as deep as the pair's deepest one at its last evaluation, plus two skins (contacts
 // deepen continuously, so the list grows with them), but never deeper than `deepest`: past it, triangle pairs
 // far from where the bodies touch can pass Appendix B's tests through the huge spheres of flat and concave
-// triangles (doc/physics.md, "Lists kept between steps"). It is rebuilt when it was never built, when a point
-// of body 2 may have moved by more than the skin since (its offset plus the turn times its bound radius;
-// |R - R0| = 2 |vec(q0^-1 q)|), when the deepest contact comes within a skin of the depth it holds, or when it
-// holds more than twice the depth needed (a pair that has come apart, or a new list, built for the deepest
-// contact a pair may start with). The new skin follows the pair's motion per step (ListSkins).
+// triangles (doc/physics.md, "Lists kept between steps"). It is rebuilt when it was never built, when body 2
+// may have moved by more than the skin since, when the deepest contact comes within a skin of the depth it
+// holds, or when it holds more than twice the depth needed (a pair that has come apart, or a new list, built
+// for the deepest contact a pair may start with). The new skin follows the pair's motion per step
+// (ListSkins); the near list it is taken from is searched again only when it no longer covers the new one.
 void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Quaternionr& rotation,
                       const Vector3r& translation, const ListSkins& skins, Real radius, Real deepest,
                       CandidateList& list, ContactStatistics& statistics) {
-  const Real smallest = skins.candidatesMin * radius, largest = skins.candidatesMax * radius;
-  Real skin = smallest;
+  const Real bound = mesh2.sphereBoundRadius();
+  Real skin = skins.candidatesMin * radius, depth = deepest;
   if (list.built) {
     ++list.age;
-    const Real turn = 2 * (list.rotation.conjugate() * rotation).vec().norm();
-    const Real motion = (translation - list.translation).norm() + turn * mesh2.sphereBoundRadius();
+    const Real motion = motionBound(list.rotation, list.translation, rotation, translation, bound);
     const Real needed = std::min(1.5 * list.deepest + 2 * list.skin, deepest);
     const bool deepEnough = list.deepest <= list.depth - list.skin || list.depth >= deepest;
     if (motion <= list.skin && deepEnough && list.depth <= 2 * needed) return;
-    skin = std::clamp(skins.candidateSteps * motion / list.age, smallest, largest);
-    list.depth = std::min(1.5 * list.deepest + 2 * skin, deepest);
-  } else {
-    list.depth = deepest;
+    skin = std::clamp(skins.candidateSteps * motion / list.age, skin, skins.candidatesMax * radius);
+    depth = std::min(1.5 * list.deepest + 2 * skin, deepest);
+  }
+  const Matrix3r matrix = rotation.toRotationMatrix();
+  const bool nearCovers = list.nearSkin > 0 && depth <= list.nearDepth &&
+                          motionBound(list.nearRotation, list.nearTranslation, rotation, translation, bound) + skin <=
+                              list.nearSkin;
+  if (!nearCovers) {
+    list.nearRotation = rotation;
+    list.nearTranslation = translation;
+    list.nearSkin = skins.nearFactor * skin;
+    list.nearDepth = std::min(depth + list.nearSkin, deepest);
+    nearTrianglePairs(mesh1, mesh2, matrix, translation, list.nearSkin, list.nearDepth, list.near);
+    ++statistics.nearRebuilds;
   }
   list.built = true;
   list.skin = skin;
+  list.depth = depth;
   list.age = 0;
   list.rotation = rotation;
   list.translation = translation;
-  trianglePairCandidates(mesh1, mesh2, rotation.toRotationMatrix(), translation, skin, list.depth, list.pairs);
+  touchableTrianglePairs(mesh1, mesh2, matrix, translation, skin, depth, list.near, list.pairs);
   ++statistics.candidateRebuilds;
 }
 

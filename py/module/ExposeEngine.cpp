@@ -85,6 +85,7 @@ class Engine {
     s["sliding_contacts"] = c.slidingContacts;
     s["neighbour_rebuilds"] = c.neighbourRebuilds;
     s["candidate_rebuilds"] = c.candidateRebuilds;
+    s["near_rebuilds"] = c.nearRebuilds;
     s["broad_phase_ms"] = 1e3 * data_.times.broadPhase;
     s["pairs_ms"] = 1e3 * data_.times.pairs;
     s["reduction_ms"] = 1e3 * data_.times.reduction;

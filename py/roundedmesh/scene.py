@@ -311,7 +311,7 @@ def critical_timestep():
 _STATISTICS = ("body_pairs", "touching_pairs", "candidates", "rejected_not_facing", "rejected_no_overlap",
                "rejected_outside_circle", "rejected_empty_polygon", "rejected_beyond_contact_circle",
                "quadrature_contacts", "direct_contacts", "sliding_contacts", "neighbour_rebuilds",
-               "candidate_rebuilds", "broad_phase_ms", "pairs_ms", "reduction_ms")
+               "candidate_rebuilds", "near_rebuilds", "broad_phase_ms", "pairs_ms", "reduction_ms")
 
 
 def statistics():
@@ -324,7 +324,9 @@ def statistics():
                                circumcircle against the contact circle), empty_polygon (S), beyond_contact_circle
       quadrature_contacts, direct_contacts   triangle contacts in each regime of Eq. 14
       sliding_contacts         triangle contacts sliding (Eq. 21)
-      neighbour_rebuilds, candidate_rebuilds   lists kept between steps that were rebuilt (0 or 1; pairs)
+      neighbour_rebuilds       whether the broad phase's neighbour list was rebuilt (0 or 1)
+      candidate_rebuilds       pairs whose candidate triangle pairs were rebuilt (from their near list)
+      near_rebuilds            pairs whose near list was searched again in the triangle trees
       broad_phase_ms, pairs_ms, reduction_ms   wall time of each stage of the C++ step
     """
     state = _current_state()
