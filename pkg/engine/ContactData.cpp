@@ -18,6 +18,8 @@ ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& other)
 void ContactData::resize(const ContactModel& model) {
   bodyStates.resize(model.bodies.size());
   partnerStates.resize(model.partners.size());
+  bodyClumps.resize(model.bodies.size(), -1);
+  partnerClumps.resize(model.partners.size(), -1);
   bodyWrenches.resize(model.bodies.size());
   partnerWrenches.resize(model.partners.size());
 }

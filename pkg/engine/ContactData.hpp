@@ -79,6 +79,10 @@ struct CandidateList {
 struct ContactData {
   std::vector<BodyState> bodyStates;
   std::vector<BodyState> partnerStates;
+  // The clump each body and partner belongs to (YADE's clumpId), -1 for none: members of one clump do not
+  // touch each other.
+  std::vector<int> bodyClumps;
+  std::vector<int> partnerClumps;
   std::vector<Wrench> bodyWrenches;
   std::vector<Wrench> partnerWrenches;
   ContactStatistics statistics;

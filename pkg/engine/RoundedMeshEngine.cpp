@@ -235,7 +235,9 @@ void broadPhase(const ContactModel& model, ContactData& data) {
   }
   data.pairs.clear();
   for (const BodyPair& pair : data.neighbours) {
-    if (!boxes[pair.body].intersects(boxes[pair.other])) continue;
+    const int clump = data.bodyClumps[pair.body];
+    const int otherClump = pair.other < bodyCount ? data.bodyClumps[pair.other] : data.partnerClumps[pair.other - bodyCount];
+    if ((clump >= 0 && clump == otherClump) || !boxes[pair.body].intersects(boxes[pair.other])) continue;
     if (pair.other < bodyCount &&
         (data.bodyStates[pair.body].position - data.bodyStates[pair.other].position).norm() >=
             model.bodies[pair.body].mesh->sphereBoundRadius() + model.bodies[pair.other].mesh->sphereBoundRadius())

@@ -2,7 +2,7 @@
 //   1. broadPhase: the world boxes of bodies and partners against the neighbour list (a Verlet list of the
 //      pairs whose boxes, grown by half the skin, overlapped when it was built; rebuilt by sweep and prune
 //      when a box leaves its grown box) -> data.pairs, the pairs whose bounds overlap now, each with a
-//      rounded body on its first side (partners never touch each other here);
+//      rounded body on its first side (partners never touch each other here, nor members of one clump);
 //   2. resolvePair for every pair, in parallel, in the rounded body's frame: the pair's candidate triangle
 //      pairs (kept between steps, rebuilt from the triangle trees when the relative motion exceeds the skin)
 //      -> Ig2 (triangle contact geometry) -> Law2 (normal load, Eqs. 12-14; friction, Eqs. 19-21) -> node
@@ -22,7 +22,8 @@ namespace roundedmesh {
 
 void RoundedMeshEngine(const ContactModel& model, ContactData& data);
 
-// Stage 1. Conservative: a pair is left out only if no triangle's cap of the body can reach the other.
+// Stage 1. Conservative: a pair is left out only if no triangle's cap of the body can reach the other, or if
+// both belong to one clump.
 void broadPhase(const ContactModel& model, ContactData& data);
 
 // One triangle contact as resolvePair saw it, in the global frame, for listings and pictures.

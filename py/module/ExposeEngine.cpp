@@ -1,6 +1,7 @@
 // The contact engine as the Python package drives it (roundedmesh/scene.py), and plane_contact,
 // sphere_contact and body_contact: the same pipeline evaluated once for one pair, without a YADE scene.
 #include <boost/python.hpp>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -50,11 +51,16 @@ class Engine {
   // One contact step on the current YADE scene; returns the ids of managed bodies that have left it (and
   // then applies nothing).
   bp::list step(const bp::object& omega) {
+    const auto start = std::chrono::steady_clock::now();
     bp::list missing;
     for (int id : readScene(omega, model_, data_)) missing.append(id);
     if (bp::len(missing) > 0) return missing;
+    const auto read = std::chrono::steady_clock::now();
     RoundedMeshEngine(model_, data_);
+    const auto computed = std::chrono::steady_clock::now();
     applyWrenches(omega, model_, data_);
+    readMs_ = std::chrono::duration<Real, std::milli>(read - start).count();
+    writeMs_ = std::chrono::duration<Real, std::milli>(std::chrono::steady_clock::now() - computed).count();
     return missing;
   }
 
@@ -89,12 +95,15 @@ class Engine {
     s["broad_phase_ms"] = 1e3 * data_.times.broadPhase;
     s["pairs_ms"] = 1e3 * data_.times.pairs;
     s["reduction_ms"] = 1e3 * data_.times.reduction;
+    s["read_ms"] = readMs_;
+    s["write_ms"] = writeMs_;
     return s;
   }
 
  private:
   ContactModel model_;
   ContactData data_;
+  Real readMs_ = 0, writeMs_ = 0;  // the bridge's share of the last step: states in, wrenches out
 };
 
 void requireFinite(const Vector3r& v, const char* name) {

@@ -16,12 +16,38 @@ bp::object bodyOrNone(const bp::object& bodies, int id) {
   }
 }
 
-void readState(const bp::object& body, BodyState& state) {
+// The body's state and clump (YADE's clumpId, -1 for none). A state that is not finite stops the step: a
+// NaN would otherwise spread silently through every contact of the body.
+void readState(const bp::object& body, int id, BodyState& state, int& clump) {
   const bp::object s = body.attr("state");
   state.position = bp::extract<Vector3r>(s.attr("pos"));
   state.orientation = bp::extract<Quaternionr>(s.attr("ori"));
   state.velocity = bp::extract<Vector3r>(s.attr("vel"));
   state.angularVelocity = bp::extract<Vector3r>(s.attr("angVel"));
+  clump = bp::extract<int>(body.attr("clumpId"));
+  const char* bad = !state.position.allFinite()                ? "position"
+                    : !state.orientation.coeffs().allFinite() ? "orientation"
+                    : !state.velocity.allFinite()             ? "velocity"
+                    : !state.angularVelocity.allFinite()      ? "angular velocity"
+                                                              : nullptr;
+  if (bad)
+    throw std::invalid_argument("body " + std::to_string(id) + ": its " + bad +
+                                " is not finite (a time step too large for the contacts, or a bad state given to "
+                                "it); reduce O.dt or fix the state");
+}
+
+// A rounded body's YADE material is the plain Material add_body gave it (label "roundedmesh"); one replaced by
+// hand would go on with the HertzMaterial the engine knows, silently: refuse the step instead.
+void requireOwnMaterial(const bp::object& body, int id) {
+  const bp::object material = body.attr("material");
+  if (!material.is_none() && bp::extract<std::string>(material.attr("label"))() == "roundedmesh") return;
+  const std::string found =
+      material.is_none() ? "removed"
+                         : "replaced by a " + bp::extract<std::string>(material.attr("__class__").attr("__name__"))() +
+                               " (label " + bp::extract<std::string>(material.attr("label").attr("__repr__")())() + ")";
+  throw std::invalid_argument("rounded body " + std::to_string(id) + ": its YADE material was " + found +
+                              "; a rounded body's contact material is a roundedmesh.HertzMaterial, changed with "
+                              "roundedmesh.set_material(" + std::to_string(id) + ", material)");
 }
 
 }  // namespace
@@ -46,10 +72,12 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
   data.resize(model);
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     const bp::object body = bodyOrNone(bodies, model.bodies[b].id);
-    if (body.is_none())
+    if (body.is_none()) {
       missing.push_back(model.bodies[b].id);
-    else
-      readState(body, data.bodyStates[b]);
+      continue;
+    }
+    requireOwnMaterial(body, model.bodies[b].id);
+    readState(body, model.bodies[b].id, data.bodyStates[b], data.bodyClumps[b]);
   }
   for (size_t p = 0; p < model.partners.size(); ++p) {
     Partner& partner = model.partners[p];
@@ -58,7 +86,7 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
       missing.push_back(partner.id);
       continue;
     }
-    readState(body, data.partnerStates[p]);
+    readState(body, partner.id, data.partnerStates[p], data.partnerClumps[p]);
     partner.shape = yadeShape(body, partner.id);
   }
   return missing;

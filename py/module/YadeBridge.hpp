@@ -12,9 +12,10 @@ namespace roundedmesh::python {
 
 namespace bp = boost::python;
 
-// Fills data.bodyStates and data.partnerStates, and refreshes the partners' shapes from their YADE
-// shapes. Returns the ids of managed bodies that are no longer in the scene; when any is missing, the
-// states are incomplete and must not be used.
+// Fills data.bodyStates, data.partnerStates and their clumps, and refreshes the partners' shapes from their
+// YADE shapes. Returns the ids of managed bodies that are no longer in the scene; when any is missing, the
+// states are incomplete and must not be used. Throws std::invalid_argument naming the body if a state is not
+// finite or a rounded body's YADE material was replaced.
 std::vector<int> readScene(const bp::object& omega, ContactModel& model, ContactData& data);
 
 // Adds every non-zero wrench of `data` to YADE's force container (O.forces.addF / addT).

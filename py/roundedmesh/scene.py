@@ -188,12 +188,12 @@ def _require_one_deformable(material, others, name, other_kind, exclude=None):
                              f"{', '.join(map(str, rigid))}; give one side a finite modulus")
 
 
-_YADE_LABEL = "roundedmesh"
+_YADE_LABEL = "roundedmesh"  # the bridge (py/module/YadeBridge.cpp) checks it on every rounded body each step
 
 
 def _yade_material(material):
     """The YADE Material of a rounded body: O.bodies.clump needs one, and its label tells the engine that the
-    body's material is still the HertzMaterial it knows (see _check_yade_materials)."""
+    body's material is still the HertzMaterial it knows."""
     return Material(density=material.density, label=_YADE_LABEL)
 
 
@@ -311,7 +311,8 @@ def critical_timestep():
 _STATISTICS = ("body_pairs", "touching_pairs", "candidates", "rejected_not_facing", "rejected_no_overlap",
                "rejected_outside_circle", "rejected_empty_polygon", "rejected_beyond_contact_circle",
                "quadrature_contacts", "direct_contacts", "sliding_contacts", "neighbour_rebuilds",
-               "candidate_rebuilds", "near_rebuilds", "broad_phase_ms", "pairs_ms", "reduction_ms")
+               "candidate_rebuilds", "near_rebuilds", "broad_phase_ms", "pairs_ms", "reduction_ms", "read_ms",
+               "write_ms")
 
 
 def statistics():
@@ -328,6 +329,7 @@ def statistics():
       candidate_rebuilds       pairs whose candidate triangle pairs were rebuilt (from their near list)
       near_rebuilds            pairs whose near list was searched again in the triangle trees
       broad_phase_ms, pairs_ms, reduction_ms   wall time of each stage of the C++ step
+      read_ms, write_ms        wall time of reading the states from YADE and adding the forces to it
     """
     state = _current_state()
     return state.engine.statistics if state else dict.fromkeys(_STATISTICS, 0)
@@ -429,19 +431,6 @@ def _forget(body_ids):
     _new_revision()
 
 
-def _check_yade_materials(state):
-    """A rounded body whose YADE material was replaced by hand (body.material = FrictMat(...)) would go on
-    with the HertzMaterial the engine knows, silently: refuse the step instead, naming the way that works."""
-    for body_id in state.body_ids:
-        body = _body_or_none(body_id)
-        if body is not None and (body.material is None or body.material.label != _YADE_LABEL):
-            found = "removed" if body.material is None else \
-                f"replaced by a {type(body.material).__name__} (label {body.material.label!r})"
-            raise ValueError(f"rounded body {body_id}: its YADE material was {found}; a rounded body's contact "
-                             f"material is a roundedmesh.HertzMaterial, changed with roundedmesh.set_material("
-                             f"{body_id}, material)")
-
-
 def _stop_the_run(step):
     """Runs `step` so that an error stops the run with a message that names its cause, and no traceback.
 
@@ -456,9 +445,6 @@ def _stop_the_run(step):
     @functools.wraps(step)
     def stopping_step(**options):
         try:
-            state = _current_state()
-            if state is not None:
-                _check_yade_materials(state)
             step(**options)
         except Exception as cause:
             if getattr(cause, "stops_the_run", False):  # from the step's own retry after erased bodies
