@@ -1,6 +1,6 @@
 // Google Benchmark of the complete C++ contact step on scene S1 with 250 gummy bears (bench/data, recorded
 // by scripts/record_s1_scene.py), without YADE or Python, and of its two per-contact stages alone:
-//   BM_S1Step/threads/moving/skin   one RoundedMeshEngine step; moving = 0: the settled packing again and again
+//   BM_S1Step/threads/moving/skin/steps/near   one RoundedMeshEngine step; moving = 0: the settled packing again and again
 //                              (the lists kept between steps stay valid), 1: the recorded steps of shaking in
 //                              order, forth and back (the lists are rebuilt as the bodies move)
 //   BM_S1NarrowPhase           Ig2 over every pair's candidates of the settled packing (time per contact)
@@ -35,6 +35,8 @@ void BM_S1Step(benchmark::State& state) {
   omp_set_num_threads(threads);
   ContactModel model = scene().model;
   if (state.range(2) > 0) model.skins.candidatesMin = model.skins.candidatesMax = 1e-4 * state.range(2);
+  if (state.range(3) > 0) model.skins.candidateSteps = static_cast<Real>(state.range(3));
+  if (state.range(4) > 0) model.skins.nearFactor = static_cast<Real>(state.range(4));
   ContactData data;
   scene().setStates(data, moving ? 0 : -1);
   for (int warmup = 0; warmup < 2; ++warmup) RoundedMeshEngine(model, data);  // builds and trims the lists
@@ -59,6 +61,7 @@ void BM_S1Step(benchmark::State& state) {
   state.counters["outside_circle"] = benchmark::Counter(total.narrowPhase.outsideCircle, perStep);
   state.counters["empty_polygon"] = benchmark::Counter(total.narrowPhase.emptyPolygon, perStep);
   state.counters["beyond_contact_circle"] = benchmark::Counter(total.narrowPhase.beyondContactCircle, perStep);
+  state.counters["through_body"] = benchmark::Counter(total.narrowPhase.throughBody, perStep);
   state.counters["contacts"] = benchmark::Counter(total.contacts(), perStep);
   state.counters["candidates_per_contact"] = static_cast<double>(total.narrowPhase.candidates) / total.contacts();
   state.counters["list_rebuilds"] = benchmark::Counter(total.candidateRebuilds, perStep);
@@ -69,10 +72,12 @@ void BM_S1Step(benchmark::State& state) {
   state.counters["reduction_ms"] = benchmark::Counter(1e3 * times.reduction, perStep);
   state.SetLabel(std::string(moving ? "shaking" : "settled") + ", " + std::to_string(threads) + " thread(s)");
 }
-BENCHMARK(BM_S1Step)->ArgsProduct({{1, 2}, {0, 1}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
-// A fixed skin of the candidate lists, in 1e-4 of the smaller volume-equivalent radius (0: the model's
-// default, which follows each pair's motion).
-BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {20, 40, 80, 160}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({{1, 2}, {0, 1}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+// The lists' parameters (0: the model's default): a fixed skin in 1e-4 of the smaller volume-equivalent
+// radius, instead of one that follows each pair's motion; the steps a list is meant to last; the near list's
+// skin as a multiple of the candidates'.
+BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {20, 80}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {1}, {0}, {5, 20, 40}, {3, 5, 10}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The settled packing after one step: its pairs with their candidate lists, and every pair's contacts.
 struct SettledStep {

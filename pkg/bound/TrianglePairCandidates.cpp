@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pkg/geom/DeepContactCriterion.hpp"
+
 namespace roundedmesh {
 namespace {
 
@@ -101,10 +103,19 @@ bool canTouch(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, 
 }  // namespace
 
 void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
-                       const Vector3r& translation, Real skin, Real depth, std::vector<TrianglePair>& pairs) {
+                       const Vector3r& translation, Real skin, Real depth, Real shallow,
+                       std::vector<TrianglePair>& pairs) {
   pairs.clear();
+  const Matrix3r back = rotation.transpose();
+  const Vector3r backTranslation = -(back * translation);
   TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, depth + skin, [&](int s, int t) {
-    if (canTouch(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin, false)) pairs.push_back({s, t});
+    if (!canTouch(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin, false)) return;
+    const bool onlyDeep = depth > shallow && !mesh1.tree().triangleBox(s).intersects(
+                                                 transformedBox(mesh2.tree().triangleBox(t), rotation, translation, shallow + skin));
+    if (onlyDeep && !(capReaches(mesh1, s, PlacedMesh{mesh2, rotation, translation}, 2 * skin) &&
+                      capReaches(mesh2, t, PlacedMesh{mesh1, back, backTranslation}, 2 * skin)))
+      return;
+    pairs.push_back({s, t});
   });
 }
 

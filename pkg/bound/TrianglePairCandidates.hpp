@@ -30,8 +30,12 @@ namespace roundedmesh {
 
 using TrianglePair = std::array<int, 2>;
 
+// Pairs whose cap boxes are more than `shallow` + skin apart can only be contacts deeper than `shallow`: they
+// are kept only if both caps reach the other body within the motion (capReaches of DeepContactCriterion.hpp,
+// slack 2 skin: the interpolated distance changes by at most sqrt(3) times the motion).
 void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
-                       const Vector3r& translation, Real skin, Real depth, std::vector<TrianglePair>& pairs);
+                       const Vector3r& translation, Real skin, Real depth, Real shallow,
+                       std::vector<TrianglePair>& pairs);
 
 // From `near` (a list for a larger skin and depth, built at a pose within (its skin - skin) of this one).
 void touchableTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,

@@ -24,8 +24,8 @@ namespace roundedmesh {
 using PartnerShape = std::variant<Plane, Wall, Box, Facet, Sphere>;
 
 // The deepest overlap a Hertz contact is meant to reach, as a fraction of the smaller body's volume-equivalent
-// radius: the margin of the triangle pair search (TriangleTree::queryPairs), within which every contact is
-// found, and the overlap of the time-step estimate (CriticalTimeStep.hpp).
+// radius: the depth a new candidate list holds, the depth past which a triangle pair must also pass the
+// deep-contact criterion (DeepContactCriterion.hpp), and the overlap of the time-step estimate (CriticalTimeStep.hpp).
 constexpr Real kDeepestOverlap = 0.1;
 
 struct RoundedBody {

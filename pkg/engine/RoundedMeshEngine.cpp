@@ -25,6 +25,9 @@ template <class... Ts>
 Overloaded(Ts...) -> Overloaded<Ts...>;
 
 constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
+// Passes of one pair's evaluation while its deepest contact outgrows its list: each grows the depth held by half;
+// from 0.1 r_eq, 8 passes reach 2.5 r_eq, deeper than two bodies can overlap.
+constexpr int kDeepeningPasses = 8;
 
 // Ig2 of a body against a plane given in the global frame.
 void planeGeometry(const RoundedMesh& mesh, const Plane& global, const BodyState& body, const Matrix3r& toBody,
@@ -72,27 +75,24 @@ Real motionBound(const Quaternionr& fromRotation, const Vector3r& fromTranslatio
 }
 
 // The candidate list of two rounded bodies, brought up to date for body 2's pose in body 1's frame. A list
-// holds contacts 1.5 times as deep as the pair's deepest one at its last evaluation, plus two skins (contacts
-// deepen continuously, so the list grows with them), but never deeper than `deepest`: past it, triangle pairs
-// far from where the bodies touch can pass Appendix B's tests through the huge spheres of flat and concave
-// triangles (doc/physics.md, "Lists kept between steps"). It is rebuilt when it was never built, when body 2
-// may have moved by more than the skin since, when the deepest contact comes within a skin of the depth it
-// holds, or when it holds more than twice the depth needed (a pair that has come apart, or a new list, built
-// for the deepest contact a pair may start with). The new skin follows the pair's motion per step
-// (ListSkins); the near list it is taken from is searched again only when it no longer covers the new one.
+// holds contacts 1.5 times as deep as the pair's deepest one at its last evaluation, plus two skins: contacts
+// deepen continuously, so the list grows with them (a new list holds `shallow`, the deepest contact meant to
+// be Hertzian). It is rebuilt when it was never built, when body 2 may have moved by more than the skin since,
+// when the deepest contact comes within a skin of the depth it holds, or when it holds more than twice the
+// depth needed (a pair that has come apart). The new skin follows the pair's motion per step (ListSkins); the
+// near list it is taken from is searched again only when it no longer covers the new one.
 void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Quaternionr& rotation,
-                      const Vector3r& translation, const ListSkins& skins, Real radius, Real deepest,
+                      const Vector3r& translation, const ListSkins& skins, Real radius, Real shallow,
                       CandidateList& list, ContactStatistics& statistics) {
   const Real bound = mesh2.sphereBoundRadius();
-  Real skin = skins.candidatesMin * radius, depth = deepest;
+  Real skin = skins.candidatesMin * radius, depth = shallow;
   if (list.built) {
     ++list.age;
     const Real motion = motionBound(list.rotation, list.translation, rotation, translation, bound);
-    const Real needed = std::min(1.5 * list.deepest + 2 * list.skin, deepest);
-    const bool deepEnough = list.deepest <= list.depth - list.skin || list.depth >= deepest;
-    if (motion <= list.skin && deepEnough && list.depth <= 2 * needed) return;
+    const Real needed = 1.5 * list.deepest + 2 * list.skin;
+    if (motion <= list.skin && list.deepest <= list.depth - list.skin && list.depth <= 2 * needed) return;
     skin = std::clamp(skins.candidateSteps * motion / list.age, skin, skins.candidatesMax * radius);
-    depth = std::min(1.5 * list.deepest + 2 * skin, deepest);
+    depth = 1.5 * list.deepest + 2 * skin;
   }
   const Matrix3r matrix = rotation.toRotationMatrix();
   const bool nearCovers = list.nearSkin > 0 && depth <= list.nearDepth &&
@@ -102,8 +102,8 @@ void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const 
     list.nearRotation = rotation;
     list.nearTranslation = translation;
     list.nearSkin = skins.nearFactor * skin;
-    list.nearDepth = std::min(depth + list.nearSkin, deepest);
-    nearTrianglePairs(mesh1, mesh2, matrix, translation, list.nearSkin, list.nearDepth, list.near);
+    list.nearDepth = depth + list.nearSkin;
+    nearTrianglePairs(mesh1, mesh2, matrix, translation, list.nearSkin, list.nearDepth, shallow, list.near);
     ++statistics.nearRebuilds;
   }
   list.built = true;
@@ -134,11 +134,22 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
     const Vector3r translation = local(s2.position);
     CandidateList fresh;
     CandidateList& list = candidates ? *candidates : fresh;
-    updateCandidates(*body.mesh, *other.mesh, rotation, translation, model.skins, smaller, kDeepestOverlap * smaller,
-                     list, statistics);
-    Ig2_RoundedMesh_RoundedMesh_PressureGeom(*body.mesh, *other.mesh, rotation.toRotationMatrix(), translation,
-                                             list.pairs, motion, out);
-    return;
+    const Real shallow = kDeepestOverlap * smaller;
+    // A contact deeper than its list holds may have neighbours deeper still that the list missed: the list grows
+    // with it and the pair is evaluated again (a few passes take a fresh list of a deep overlap to its depth).
+    for (int pass = 0;; ++pass) {
+      updateCandidates(*body.mesh, *other.mesh, rotation, translation, model.skins, smaller, shallow, list, statistics);
+      NarrowPhaseCounts counts;
+      geoms.clear();
+      Ig2_RoundedMesh_RoundedMesh_PressureGeom(*body.mesh, *other.mesh, rotation.toRotationMatrix(), translation,
+                                               list.pairs, shallow, motion, GeomOutput(geoms, &counts));
+      list.deepest = 0;
+      for (const PressureGeom& geom : geoms) list.deepest = std::max(list.deepest, geom.effectiveOverlap);
+      if (list.deepest <= list.depth - list.skin || pass == kDeepeningPasses) {
+        statistics.narrowPhase += counts;
+        return;
+      }
+    }
   }
   const BodyState& s2 = data.partnerStates[pair.other - bodyCount];
   const PartnerShape& shape = model.partners[pair.other - bodyCount].shape;
@@ -259,10 +270,6 @@ void pairGeometry(const ContactModel& model, const ContactData& data, const Body
   contactGeometry(model, data, pair, motion, candidates, geoms, statistics);
   ++statistics.bodyPairs;
   if (!geoms.empty()) ++statistics.touchingPairs;
-  if (candidates) {
-    candidates->deepest = 0;
-    for (const PressureGeom& geom : geoms) candidates->deepest = std::max(candidates->deepest, geom.effectiveOverlap);
-  }
 }
 
 PairResult pairLoad(const ContactModel& model, const ContactData& data, const BodyPair& pair,

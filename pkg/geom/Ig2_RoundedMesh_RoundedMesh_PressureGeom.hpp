@@ -1,5 +1,6 @@
 // Ig2 functor: the triangles of two rounded bodies against each other (Appendix B): every candidate pair
-// (TrianglePairCandidates.hpp) goes through triangleSphereGeom with body 2's triangle placed in body 1's frame.
+// (TrianglePairCandidates.hpp) goes through triangleSphereGeom with body 2's triangle placed in body 1's frame;
+// a pair deeper than `shallow` [m] must also lie inside both bodies (DeepContactCriterion.hpp).
 // Inputs: body 2's pose in body 1's frame (x1 = rotation * x2 + translation), the candidates, and body 2's
 // motion relative to body 1. Appends one PressureGeom per triangle pair in contact, in candidate order.
 #pragma once
@@ -7,13 +8,14 @@
 #include <vector>
 
 #include "pkg/bound/TrianglePairCandidates.hpp"
+#include "pkg/geom/DeepContactCriterion.hpp"
 #include "pkg/geom/TriangleSphereGeom.hpp"
 
 namespace roundedmesh {
 
 void Ig2_RoundedMesh_RoundedMesh_PressureGeom(const RoundedMesh& mesh1, const RoundedMesh& mesh2,
                                               const Matrix3r& rotation, const Vector3r& translation,
-                                              const std::vector<TrianglePair>& candidates,
+                                              const std::vector<TrianglePair>& candidates, Real shallow,
                                               const RelativeMotion& motion, GeomOutput out);
 
 }  // namespace roundedmesh

@@ -29,8 +29,8 @@ struct PressureGeom {
 };
 
 // How the narrow phase of one candidate ended: a contact, or the first of its tests (Appendix B, in the order
-// they run) that rejected it. Converts to true for a contact.
-enum class Rejection { None, NotFacing, NoOverlap, OutsideCircle, EmptyPolygon, BeyondContactCircle };
+// they run, then the deep-contact criterion of DeepContactCriterion.hpp) that rejected it. Converts to true for a contact.
+enum class Rejection { None, NotFacing, NoOverlap, OutsideCircle, EmptyPolygon, BeyondContactCircle, ThroughBody };
 
 struct GeomTest {
   Rejection rejection;
@@ -45,6 +45,7 @@ struct NarrowPhaseCounts {
   long outsideCircle = 0;
   long emptyPolygon = 0;
   long beyondContactCircle = 0;
+  long throughBody = 0;
 
   void count(GeomTest result) {
     ++candidates;
@@ -55,6 +56,7 @@ struct NarrowPhaseCounts {
       case Rejection::OutsideCircle: ++outsideCircle; break;
       case Rejection::EmptyPolygon: ++emptyPolygon; break;
       case Rejection::BeyondContactCircle: ++beyondContactCircle; break;
+      case Rejection::ThroughBody: ++throughBody; break;
     }
   }
   NarrowPhaseCounts& operator+=(const NarrowPhaseCounts& o) {
@@ -64,6 +66,7 @@ struct NarrowPhaseCounts {
     outsideCircle += o.outsideCircle;
     emptyPolygon += o.emptyPolygon;
     beyondContactCircle += o.beyondContactCircle;
+    throughBody += o.throughBody;
     return *this;
   }
 };

@@ -67,6 +67,7 @@ RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> t
     const Real centreDepth = std::sqrt(std::max(r.radius * r.radius - r.circumradius * r.circumradius, Real(0)));
     r.sphereCentre = r.circumcentre - centreDepth * r.normal;
     r.capHeight = r.radius - centreDepth;
+    maxCapHeight_ = std::max(maxCapHeight_, r.capHeight);
     AlignedBox3r& box = boxes[t];
     box.extend(a).extend(b).extend(c);
     box.min().array() -= r.capHeight;
@@ -77,6 +78,20 @@ RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> t
                                                                r.circumcentre.norm() + r.circumradius));
   }
   tree_ = TriangleTree(std::move(boxes));
+}
+
+const SolidDistance& RoundedMesh::solidDistance() const {
+  std::call_once(distance_->built, [&] {
+    Real meanCircumradius = 0;
+    for (const RoundedTriangle& r : rounded_) meanCircumradius += r.circumradius / rounded_.size();
+    AlignedBox3r box;
+    for (const Vector3r& v : vertices_) box.extend(v);
+    const Real extent = box.sizes().maxCoeff();
+    const Real spacing = std::max(0.5 * meanCircumradius, 0.01 * extent);
+    distance_->field = std::make_unique<const SolidDistance>(vertices_, triangles_, spacing,
+                                                             4 * meanCircumradius + 2 * spacing);
+  });
+  return *distance_->field;
 }
 
 std::vector<Real> RoundedMesh::radii() const {

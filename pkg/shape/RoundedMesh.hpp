@@ -8,10 +8,13 @@
 #pragma once
 
 #include <array>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "pkg/bound/TriangleTree.hpp"
 #include "pkg/common/Types.hpp"
+#include "pkg/shape/SolidDistance.hpp"
 
 namespace roundedmesh {
 
@@ -43,6 +46,11 @@ class RoundedMesh {
   Real sphereBoundRadius() const { return sphereBoundRadius_; }
   // The hierarchy of the triangles' cap boxes (TriangleTree.hpp), body frame.
   const TriangleTree& tree() const { return tree_; }
+  // The tallest cap: no point of the rounded surface lies farther than this outside the flat mesh's solid [m].
+  Real maxCapHeight() const { return maxCapHeight_; }
+  // The distance from the flat mesh's solid (SolidDistance.hpp), built on first use (thread-safe): grid spacing
+  // half the mean circumradius (at least 1/100 of the mesh's extent), band four mean circumradii and two spacings.
+  const SolidDistance& solidDistance() const;
   // The same mesh moved rigidly: x -> rotation * x + translation.
   RoundedMesh transformed(const Matrix3r& rotation, const Vector3r& translation) const;
 
@@ -51,7 +59,13 @@ class RoundedMesh {
   std::vector<Triangle> triangles_;
   std::vector<RoundedTriangle> rounded_;
   Real sphereBoundRadius_ = 0;
+  Real maxCapHeight_ = 0;
   TriangleTree tree_;
+  struct LazyDistance {
+    std::once_flag built;
+    std::unique_ptr<const SolidDistance> field;
+  };
+  std::shared_ptr<LazyDistance> distance_ = std::make_shared<LazyDistance>();  // copies share the same geometry
 };
 
 }  // namespace roundedmesh

@@ -86,6 +86,7 @@ class Engine {
     s["rejected_outside_circle"] = c.narrowPhase.outsideCircle;
     s["rejected_empty_polygon"] = c.narrowPhase.emptyPolygon;
     s["rejected_beyond_contact_circle"] = c.narrowPhase.beyondContactCircle;
+    s["rejected_through_body"] = c.narrowPhase.throughBody;
     s["quadrature_contacts"] = c.quadratureContacts;
     s["direct_contacts"] = c.directContacts;
     s["sliding_contacts"] = c.slidingContacts;

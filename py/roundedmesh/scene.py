@@ -310,6 +310,7 @@ def critical_timestep():
 
 _STATISTICS = ("body_pairs", "touching_pairs", "candidates", "rejected_not_facing", "rejected_no_overlap",
                "rejected_outside_circle", "rejected_empty_polygon", "rejected_beyond_contact_circle",
+               "rejected_through_body",
                "quadrature_contacts", "direct_contacts", "sliding_contacts", "neighbour_rebuilds",
                "candidate_rebuilds", "near_rebuilds", "broad_phase_ms", "pairs_ms", "reduction_ms", "read_ms",
                "write_ms")
@@ -322,7 +323,9 @@ def statistics():
       candidates               triangle pairs (and triangle-partner pairs) put through the narrow phase
       rejected_*               how many of them each test rejected, in the order they run (Appendix B):
                                not_facing (Eq. B.5), no_overlap (Eq. 10), outside_circle (projected
-                               circumcircle against the contact circle), empty_polygon (S), beyond_contact_circle
+                               circumcircle against the contact circle), empty_polygon (S), beyond_contact_circle,
+                               through_body (a pair deeper than 0.1 r_eq whose caps do not reach into the other
+                               body: doc/physics.md, "Which triangle pairs touch")
       quadrature_contacts, direct_contacts   triangle contacts in each regime of Eq. 14
       sliding_contacts         triangle contacts sliding (Eq. 21)
       neighbour_rebuilds       whether the broad phase's neighbour list was rebuilt (0 or 1)

@@ -1,0 +1,34 @@
+// Which triangle pairs touch, past the Hertz range (doc/physics.md, "Which triangle pairs touch"). Appendix B
+// alone accepts pairs far from where two bodies really overlap: a small sphere of body 1 swallowed by a large
+// or flat triangle's sphere of body 2 that reaches through or past body 2 scores an effective overlap of
+// centimetres where the bodies overlap by a millimetre, or not at all. At a real contact, however deep, the
+// surface points on the line along n12 through c_eff, q1 on cap 1 and q2 on cap 2 (|q1 - q2| = delta_eff), bound
+// a segment that lies inside both bodies: from q2 the line enters body 2, from q1 it enters body 1. So
+//   a triangle pair deeper than `shallow` touches only if q1, q2 and their midpoint lie in both bodies' solids,
+// each point tested against the other body's distance field (SolidDistance.hpp): within its tallest cap
+// (points of the rounded solid lie that close to the flat one) plus the field's tolerance. Shallow pairs are left
+// to Appendix B: the false pairs are as deep as bodies are thick.
+// capReaches is the necessary condition on one triangle that the candidate lists use: cap s, whose points lie
+// within rho_s of its circumcentre, comes within the same tolerance of body 2's solid, up to `slack` [m] of
+// motion to come.
+#pragma once
+
+#include "pkg/geom/PressureGeom.hpp"
+#include "pkg/shape/RoundedMesh.hpp"
+
+namespace roundedmesh {
+
+// Body 2 in body 1's frame: x1 = rotation * x2 + translation.
+struct PlacedMesh {
+  const RoundedMesh& mesh;
+  const Matrix3r& rotation;
+  const Vector3r& translation;
+};
+
+// The segment test for triangle s of mesh1 and triangle t of body 2 in contact as `geom` (body 1's frame).
+bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom);
+
+// Triangle s of mesh1 (body 1's frame) against body 2.
+bool capReaches(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, Real slack);
+
+}  // namespace roundedmesh

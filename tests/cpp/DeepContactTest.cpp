@@ -1,0 +1,143 @@
+// Which triangle pairs touch past the Hertz range (DeepContactCriterion.hpp): two meshed spheres and two gummy
+// bears pressed deep into each other keep every triangle contact a brute-force search over all triangle pairs
+// finds with the stated criterion, and push back harder the deeper they go; the pairs Appendix B alone accepts
+// far from where two bodies overlap (a small sphere swallowed by a large one, centimetres deep where the
+// bodies overlap by a millimetre) are rejected.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+
+#include "bench/RecordedScene.hpp"
+#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/geom/Ig2_RoundedMesh_RoundedMesh_PressureGeom.hpp"
+#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/shape/Icosphere.hpp"
+
+namespace roundedmesh {
+namespace {
+
+const HertzMaterial kRubber{1e6, 0.4, 2000, 0.01};
+
+BodyState at(const Vector3r& position, const Quaternionr& orientation = Quaternionr::Identity()) {
+  BodyState s;
+  s.position = position;
+  s.orientation = orientation;
+  return s;
+}
+
+// Every triangle pair of bodies 0 and 1 through Ig2, with (shallow = the engine's) or without (infinite) the
+// deep-contact criterion.
+std::vector<PressureGeom> bruteForce(const ContactModel& model, const ContactData& data, Real shallow) {
+  const RoundedBody &a = model.bodies[0], &b = model.bodies[1];
+  const BodyState &s1 = data.bodyStates[0], &s2 = data.bodyStates[1];
+  const Matrix3r rotation = (s1.orientation.conjugate() * s2.orientation).toRotationMatrix();
+  const Vector3r translation = s1.orientation.conjugate() * (s2.position - s1.position);
+  std::vector<TrianglePair> all;
+  for (int s = 0; s < a.mesh->triangleCount(); ++s)
+    for (int t = 0; t < b.mesh->triangleCount(); ++t) all.push_back({s, t});
+  std::vector<PressureGeom> geoms;
+  Ig2_RoundedMesh_RoundedMesh_PressureGeom(*a.mesh, *b.mesh, rotation, translation, all, shallow, RelativeMotion(), geoms);
+  return geoms;
+}
+
+std::set<TrianglePair> triangles(const std::vector<PressureGeom>& geoms) {
+  std::set<TrianglePair> found;
+  for (const PressureGeom& g : geoms) found.insert({g.triangle, g.partnerTriangle});
+  return found;
+}
+
+Real shallow(const ContactModel& model) {
+  return kDeepestOverlap * std::min(model.bodies[0].equivalentRadius, model.bodies[1].equivalentRadius);
+}
+
+// The pair resolved on its own (a fresh candidate list, as rm.body_contact does), and brute force. Returns the
+// deepest effective overlap found.
+Real expectBruteForceContacts(const ContactModel& model, const ContactData& data, const std::string& where) {
+  std::vector<PressureGeom> engine;
+  ContactStatistics statistics;
+  pairGeometry(model, data, {0, 1}, engine, statistics);
+  EXPECT_EQ(triangles(engine), triangles(bruteForce(model, data, shallow(model)))) << where;
+  Real deepest = 0;
+  for (const PressureGeom& g : engine) deepest = std::max(deepest, g.effectiveOverlap);
+  return deepest;
+}
+
+// Two 642-node spheres of radius 25 mm pressed from 0.5 to 12.5 mm (half the radius): every triangle contact of
+// brute force, and a force that grows with the overlap at every step of 0.5 mm.
+TEST(DeepContact, SpheresKeepEveryContactAndPushBackHarder) {
+  const BodyMesh mesh(icosphere(0.025, 3));
+  ContactModel model;
+  model.bodies.push_back(roundedBody(0, mesh, kRubber));
+  model.bodies.push_back(roundedBody(1, mesh, kRubber));
+  const Quaternionr turn(Eigen::AngleAxis<Real>(0.7, Vector3r(1, 2, 3).normalized()));
+  const Vector3r axis = Vector3r(0.3, -0.2, 1).normalized();
+  Real previous = 0;
+  for (int k = 1; k <= 25; ++k) {
+    const Real overlap = 0.0005 * k;
+    ContactData data;
+    data.resize(model);
+    data.bodyStates = {at(Vector3r::Zero()), at((0.05 - overlap) * axis, turn)};
+    std::vector<PressureGeom> scratch;
+    const PairResult r = resolvePair(model, data, {0, 1}, scratch);
+    const Real force = -r.onBody.force.dot(axis);
+    EXPECT_GT(force, previous) << "overlap " << overlap;
+    previous = force;
+    if (k % 6 == 0) EXPECT_GT(expectBruteForceContacts(model, data, "overlap " + std::to_string(overlap)), 0.8 * overlap);
+  }
+}
+
+// Two gummy bears in random orientations, their centres brought together until they overlap by about 10 mm
+// (0.4 r_eq): the pair resolved on its own finds what brute force finds.
+TEST(DeepContact, GummyBearsKeepEveryContact) {
+  const RecordedScene scene = loadRecordedScene();
+  ContactModel model;
+  model.bodies = {scene.model.bodies[0], scene.model.bodies[1]};
+  std::mt19937 rng(11);
+  std::normal_distribution<Real> normal;
+  for (int trial = 0; trial < 3; ++trial) {
+    const Quaternionr q1 = Quaternionr(normal(rng), normal(rng), normal(rng), normal(rng)).normalized();
+    const Quaternionr q2 = Quaternionr(normal(rng), normal(rng), normal(rng), normal(rng)).normalized();
+    const Vector3r axis = Vector3r(normal(rng), normal(rng), normal(rng)).normalized();
+    ContactData data;
+    data.resize(model);
+    // Approach until a contact exists, then 10 mm further.
+    Real distance = 0.12;
+    for (;; distance -= 0.0005) {
+      data.bodyStates = {at(Vector3r::Zero(), q1), at(distance * axis, q2)};
+      std::vector<PressureGeom> geoms;
+      ContactStatistics statistics;
+      pairGeometry(model, data, {0, 1}, geoms, statistics);
+      if (!geoms.empty()) break;
+    }
+    data.bodyStates[1].position = (distance - 0.010) * axis;
+    EXPECT_GT(expectBruteForceContacts(model, data, "trial " + std::to_string(trial)), 2 * shallow(model));
+  }
+}
+
+// In the recorded S1 packing, Appendix B alone accepts triangle pairs of bears 0 and 1 (whose real contacts are
+// at most 1.5 mm deep) with effective overlaps above 15 mm; the criterion rejects every pair deeper than
+// 0.1 r_eq there and keeps every shallower one.
+TEST(DeepContact, FarPairsOfTheS1PackingAreRejected) {
+  const RecordedScene scene = loadRecordedScene();
+  ContactModel model;
+  model.bodies = {scene.model.bodies[0], scene.model.bodies[1]};
+  ContactData data;
+  data.resize(model);
+  data.bodyStates = {scene.frames[59][0], scene.frames[59][1]};
+  const std::vector<PressureGeom> appendixB = bruteForce(model, data, std::numeric_limits<Real>::infinity());
+  const std::vector<PressureGeom> criterion = bruteForce(model, data, shallow(model));
+  int far = 0, shallowOnes = 0;
+  for (const PressureGeom& g : appendixB) {
+    far += g.effectiveOverlap > 0.015;
+    shallowOnes += g.effectiveOverlap <= shallow(model);
+  }
+  ASSERT_GE(far, 2);
+  int deep = 0;
+  for (const PressureGeom& g : criterion) deep += g.effectiveOverlap > shallow(model);
+  EXPECT_EQ(deep, 0);
+  EXPECT_EQ(static_cast<int>(criterion.size()), shallowOnes);
+}
+
+}  // namespace
+}  // namespace roundedmesh
