@@ -10,7 +10,6 @@
 
 #include "pkg/law/Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp"
 #include "pkg/material/HertzMaterial.hpp"
-#include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/Box.hpp"
 #include "pkg/shape/Facet.hpp"
 #include "pkg/shape/Plane.hpp"
@@ -34,8 +33,6 @@ struct RoundedBody {
   HertzMaterial material;
   Real equivalentRadius;  // radius of the sphere of the same volume [m]
 };
-
-RoundedBody roundedBody(int id, const BodyMesh& mesh, const HertzMaterial& material);
 
 struct Partner {
   int id;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "pkg/engine/ContactModel.hpp"
 #include "pkg/shape/MassProperties.hpp"
 #include "pkg/shape/RoundedMesh.hpp"
 #include "pkg/shape/TriangleSurface.hpp"
@@ -65,5 +66,9 @@ class BodyMesh {
   Vector3r inputCentroid_;
   Quaternionr inputOrientation_;
 };
+
+// The contact engine's view of a body made of `mesh` (ContactModel.hpp): its shape, material and
+// volume-equivalent radius.
+RoundedBody roundedBody(int id, const BodyMesh& mesh, const HertzMaterial& material);
 
 }  // namespace roundedmesh

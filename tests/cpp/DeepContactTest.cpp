@@ -83,7 +83,9 @@ TEST(DeepContact, SpheresKeepEveryContactAndPushBackHarder) {
     const Real force = -r.onBody.force.dot(axis);
     EXPECT_GT(force, previous) << "overlap " << overlap;
     previous = force;
-    if (k % 6 == 0) EXPECT_GT(expectBruteForceContacts(model, data, "overlap " + std::to_string(overlap)), 0.8 * overlap);
+    if (k % 6 == 0) {
+      EXPECT_GT(expectBruteForceContacts(model, data, "overlap " + std::to_string(overlap)), 0.8 * overlap);
+    }
   }
 }
 
