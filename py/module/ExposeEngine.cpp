@@ -1,11 +1,12 @@
 // The contact engine as the Python package drives it (roundedmesh/scene.py), and plane_contact,
-// sphere_contact and body_contact: the same pipeline evaluated once for one pair, without a YADE scene.
+// sphere_contact and body_contact (pkg/engine/PairEvaluation.hpp): arguments checked and converted here.
 #include <boost/python.hpp>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 #include "pkg/engine/CriticalTimeStep.hpp"
+#include "pkg/engine/PairEvaluation.hpp"
 #include "pkg/engine/RoundedMeshEngine.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "py/module/YadeBridge.hpp"
@@ -145,18 +146,14 @@ bp::dict describe(const TriangleContact& c) {
   return d;
 }
 
-// Body 0 of `model` against its second entity (body 1, or partner 0), once: (F1, T1, F2, T2, contacts), the
-// torques about each one's position, and a dict per triangle contact when `details`.
-bp::tuple evaluatePair(ContactModel& model, ContactData& data, Real gamma, const std::string& regime, bool details) {
-  model.pressure = pressureOptions(gamma, regime);
-  for (const RoundedBody& body : model.bodies) body.material.validate();
-  for (const Partner& partner : model.partners) partner.material.validate();
-  std::vector<TriangleContact> contacts;
-  std::vector<PressureGeom> scratch;
-  const PairResult r = resolvePair(model, data, {0, 1}, scratch, details ? &contacts : nullptr);
+bp::list describeAll(const std::vector<TriangleContact>& contacts) {
   bp::list listed;
   for (const TriangleContact& c : contacts) listed.append(describe(c));
-  return bp::make_tuple(r.onBody.force, r.onBody.torque, r.onOther.force, r.onOther.torque, listed);
+  return listed;
+}
+
+bp::tuple asTuple(const PairEvaluation& e) {
+  return bp::make_tuple(e.onFirst.force, e.onFirst.torque, e.onSecond.force, e.onSecond.torque, describeAll(e.contacts));
 }
 
 bp::tuple planeContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& planePoint,
@@ -166,14 +163,10 @@ bp::tuple planeContact(const BodyMesh& mesh, const Vector3r& pos, const Quaterni
   requireFinite(planePoint, "plane_point");
   requireFinite(planeNormal, "plane_normal");
   if (planeNormal.norm() == 0) throw std::invalid_argument("plane_normal must not be zero");
-  ContactModel model;
-  model.bodies.push_back(roundedBody(0, mesh, meshMaterial));
-  model.partners.push_back({1, Plane{planePoint, planeNormal.normalized()}, planeMaterial});
-  ContactData data;
-  data.resize(model);
-  data.bodyStates[0] = bodyState(pos, ori, vel, angVel, 0);
-  const bp::tuple all = evaluatePair(model, data, gamma, regime, false);
-  return bp::make_tuple(all[0], all[1]);
+  const PairEvaluation e = roundedmesh::planeContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
+                                                     Plane{planePoint, planeNormal.normalized()}, planeMaterial,
+                                                     pressureOptions(gamma, regime));
+  return bp::make_tuple(e.onFirst.force, e.onFirst.torque);
 }
 
 bp::tuple sphereContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& centre,
@@ -183,14 +176,10 @@ bp::tuple sphereContact(const BodyMesh& mesh, const Vector3r& pos, const Quatern
   requireFinite(centre, "centre");
   if (!(std::isfinite(radius) && radius > 0))
     throw std::invalid_argument("radius must be positive and finite, got " + std::to_string(radius));
-  ContactModel model;
-  model.bodies.push_back(roundedBody(0, mesh, meshMaterial));
-  model.partners.push_back({1, Sphere{radius}, sphereMaterial});
-  ContactData data;
-  data.resize(model);
-  data.bodyStates[0] = bodyState(pos, ori, vel, angVel, 0);
-  data.partnerStates[0] = bodyState(centre, Quaternionr::Identity(), sphereVel, sphereAngVel, 2);
-  return evaluatePair(model, data, gamma, regime, details);
+  return asTuple(roundedmesh::sphereContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
+                                            Sphere{radius},
+                                            bodyState(centre, Quaternionr::Identity(), sphereVel, sphereAngVel, 2),
+                                            sphereMaterial, pressureOptions(gamma, regime), details));
 }
 
 bp::tuple bodyContact(const BodyMesh& mesh1, const Vector3r& pos1, const Quaternionr& ori1, const BodyMesh& mesh2,
@@ -198,14 +187,9 @@ bp::tuple bodyContact(const BodyMesh& mesh1, const Vector3r& pos1, const Quatern
                       const HertzMaterial& material2, const Vector3r& vel1, const Vector3r& angVel1,
                       const Vector3r& vel2, const Vector3r& angVel2, Real gamma, const std::string& regime,
                       bool details) {
-  ContactModel model;
-  model.bodies.push_back(roundedBody(0, mesh1, material1));
-  model.bodies.push_back(roundedBody(1, mesh2, material2));
-  ContactData data;
-  data.resize(model);
-  data.bodyStates[0] = bodyState(pos1, ori1, vel1, angVel1, 1);
-  data.bodyStates[1] = bodyState(pos2, ori2, vel2, angVel2, 2);
-  return evaluatePair(model, data, gamma, regime, details);
+  return asTuple(roundedmesh::bodyContact(roundedBody(0, mesh1, material1), bodyState(pos1, ori1, vel1, angVel1, 1),
+                                          roundedBody(1, mesh2, material2), bodyState(pos2, ori2, vel2, angVel2, 2),
+                                          pressureOptions(gamma, regime), details));
 }
 
 const char* partnerKindName(const Plane&) { return "Plane"; }

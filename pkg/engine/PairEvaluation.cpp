@@ -1,0 +1,50 @@
+#include "pkg/engine/PairEvaluation.hpp"
+
+namespace roundedmesh {
+namespace {
+
+// Body 0 of `model` against its other entity (body 1, or partner 0), in the states given.
+PairEvaluation evaluate(ContactModel& model, const std::vector<BodyState>& bodies,
+                        const std::vector<BodyState>& partners, const PressureOptions& options, bool details) {
+  model.pressure = options;
+  for (const RoundedBody& body : model.bodies) body.material.validate();
+  for (const Partner& partner : model.partners) partner.material.validate();
+  ContactData data;
+  data.resize(model);
+  data.bodyStates = bodies;
+  data.partnerStates = partners;
+  PairEvaluation out;
+  std::vector<PressureGeom> scratch;
+  const PairResult r = resolvePair(model, data, {0, 1}, scratch, details ? &out.contacts : nullptr);
+  out.onFirst = r.onBody;
+  out.onSecond = r.onOther;
+  return out;
+}
+
+}  // namespace
+
+PairEvaluation planeContact(const RoundedBody& body, const BodyState& state, const Plane& plane,
+                            const HertzMaterial& planeMaterial, const PressureOptions& options, bool details) {
+  ContactModel model;
+  model.bodies.push_back(body);
+  model.partners.push_back({-1, plane, planeMaterial});
+  return evaluate(model, {state}, {BodyState()}, options, details);
+}
+
+PairEvaluation sphereContact(const RoundedBody& body, const BodyState& state, const Sphere& sphere,
+                             const BodyState& sphereState, const HertzMaterial& sphereMaterial,
+                             const PressureOptions& options, bool details) {
+  ContactModel model;
+  model.bodies.push_back(body);
+  model.partners.push_back({-1, sphere, sphereMaterial});
+  return evaluate(model, {state}, {sphereState}, options, details);
+}
+
+PairEvaluation bodyContact(const RoundedBody& first, const BodyState& firstState, const RoundedBody& second,
+                           const BodyState& secondState, const PressureOptions& options, bool details) {
+  ContactModel model;
+  model.bodies = {first, second};
+  return evaluate(model, {firstState, secondState}, {}, options, details);
+}
+
+}  // namespace roundedmesh

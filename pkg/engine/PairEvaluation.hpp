@@ -1,0 +1,29 @@
+// One contact evaluated once, without a scene, through the engine's own stages (resolvePair): a rounded body
+// against a plane, against an analytic sphere, or against another rounded body. What rm.plane_contact,
+// rm.sphere_contact, rm.body_contact and rm.triangle_contacts return, for validation and for looking inside a
+// contact. Forces [N] and torques [N m] global, each torque about its own body's position; with `details`, every
+// triangle contact as resolvePair sees it. Throws std::invalid_argument naming a material parameter out of range.
+#pragma once
+
+#include <vector>
+
+#include "pkg/engine/RoundedMeshEngine.hpp"
+
+namespace roundedmesh {
+
+struct PairEvaluation {
+  Wrench onFirst, onSecond;
+  std::vector<TriangleContact> contacts;  // filled only with `details`
+};
+
+PairEvaluation planeContact(const RoundedBody& body, const BodyState& state, const Plane& plane,
+                            const HertzMaterial& planeMaterial, const PressureOptions& options, bool details = false);
+
+PairEvaluation sphereContact(const RoundedBody& body, const BodyState& state, const Sphere& sphere,
+                             const BodyState& sphereState, const HertzMaterial& sphereMaterial,
+                             const PressureOptions& options, bool details = false);
+
+PairEvaluation bodyContact(const RoundedBody& first, const BodyState& firstState, const RoundedBody& second,
+                           const BodyState& secondState, const PressureOptions& options, bool details = false);
+
+}  // namespace roundedmesh
