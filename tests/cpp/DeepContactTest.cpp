@@ -13,18 +13,14 @@
 #include "pkg/geom/Ig2_RoundedMesh_RoundedMesh_PressureGeom.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
+#include "tests/cpp/TestSupport.hpp"
 
 namespace roundedmesh {
 namespace {
 
-const HertzMaterial kRubber{1e6, 0.4, 2000, 0.01};
+using test::at;
 
-BodyState at(const Vector3r& position, const Quaternionr& orientation = Quaternionr::Identity()) {
-  BodyState s;
-  s.position = position;
-  s.orientation = orientation;
-  return s;
-}
+const HertzMaterial kRubber{1e6, 0.4, 2000, 0.01};
 
 // Every triangle pair of bodies 0 and 1 through Ig2, with (shallow = the engine's) or without (infinite) the
 // deep-contact criterion.

@@ -6,18 +6,14 @@
 #include "pkg/engine/PairEvaluation.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
+#include "tests/cpp/TestSupport.hpp"
 
 namespace roundedmesh {
 namespace {
 
-const HertzMaterial kRubber{1e6, 0.4, 2000, 1e-3};
+using test::at;
 
-BodyState at(const Vector3r& position, const Quaternionr& orientation = Quaternionr::Identity()) {
-  BodyState s;
-  s.position = position;
-  s.orientation = orientation;
-  return s;
-}
+const HertzMaterial kRubber{1e6, 0.4, 2000, 1e-3};
 
 // Bitwise: both run resolvePair on the same model and states.
 TEST(PairEvaluation, PlaneContactIsTheEnginesStep) {

@@ -8,11 +8,20 @@
 #include <functional>
 #include <vector>
 
+#include "pkg/engine/BodyState.hpp"
 #include "pkg/math/ConvexPolygon.hpp"
 
 namespace roundedmesh::test {
 
 // Gauss-Legendre nodes and weights on [-1, 1] (Newton iteration on the Legendre polynomial).
+// A body state at `position` turned by `orientation`, at rest.
+inline BodyState at(const Vector3r& position, const Quaternionr& orientation = Quaternionr::Identity()) {
+  BodyState s;
+  s.position = position;
+  s.orientation = orientation;
+  return s;
+}
+
 inline void gaussLegendre(int n, std::vector<Real>& x, std::vector<Real>& w) {
   x.resize(n);
   w.resize(n);
