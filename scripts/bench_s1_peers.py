@@ -1,7 +1,7 @@
-"""Whole-step cost of YADE's own representations of the gummy bear in scene S1 (doc/scenes.md), at the poses
-of a settled packing of rounded bodies: clumps of spheres, level-set bodies and plain spheres of the
-volume-equivalent radius, each with YADE's Hertz-Mindlin law (roundedmesh.peers). The figures our engine's
-speed is stated against.
+"""Whole-step cost of the gummy bear in scene S1 (doc/scenes.md) at the poses of a settled packing, timed in one
+process: as roundedmesh's rounded bodies, and as YADE's own representations, clumps of spheres, level-set bodies
+and plain spheres of the volume-equivalent radius, each with YADE's Hertz-Mindlin law (roundedmesh.peers). The
+figures our engine's speed is stated against.
 
     /usr/bin/python3 scripts/bench_s1_peers.py [--poses bench/data/s1_settled.csv]
         [--peers clumps spheres [levelset]] [--count 40] [--spacing 1e-3] [--surface-nodes 511]
@@ -46,6 +46,7 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 from yade import O  # noqa: E402
 
+import roundedmesh as rm  # noqa: E402
 from roundedmesh import peers  # noqa: E402
 from roundedmesh.benchmarking import machine, step_times_ms  # noqa: E402
 from roundedmesh.progress import Progress  # noqa: E402
@@ -80,7 +81,11 @@ def read_poses(path, shape):
 
 def contact_counts(ids):
     """(real interactions, touching body pairs, body-wall pairs): YADE's real interactions, and the distinct
-    pairs of bodies (clumps counted once, whatever members touch) and of body and wall that they make."""
+    pairs of bodies (clumps counted once, whatever members touch) and of body and wall that they make. For
+    rounded bodies, whose contacts are roundedmesh's: (triangle contacts, touching pairs, -1: walls included)."""
+    if rm.rounded_bodies():
+        s = rm.statistics()
+        return s["quadrature_contacts"] + s["direct_contacts"], s["touching_pairs"], -1
     owner = {}
     for body in O.bodies:
         owner[body.id] = body.clumpId if body.isClumpMember else body.id
@@ -157,8 +162,8 @@ def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--poses", default="bench/data/s1_settled.csv")
     parser.add_argument("--shape", default="gummy_bear")
-    parser.add_argument("--peers", nargs="+", default=["clumps", "spheres"],
-                        choices=["clumps", "levelset", "spheres"])
+    parser.add_argument("--peers", nargs="+", default=["roundedmesh", "clumps", "spheres"],
+                        choices=["roundedmesh", "clumps", "levelset", "spheres"])
     parser.add_argument("--count", type=int, default=40, help="spheres per clump")
     parser.add_argument("--spacing", type=float, default=1e-3, help="level-set grid spacing [m]")
     parser.add_argument("--surface-nodes", type=int, default=511, help="level-set boundary nodes asked for")
@@ -186,6 +191,7 @@ def main(argv):
           f"damping ratio at {betan['bear-bear overlap'] * 1e3:.3f} / {betan['bear-wall overlap'] * 1e3:.3f} mm)")
     level_set_options = {} if args.level_set_verlet is None else {"verlet_distance": args.level_set_verlet}
     builders = {
+        "roundedmesh": (f"roundedmesh, {args.shape} meshes", lambda: peers.build_rounded(poses, args.shape)),
         "clumps": (f"clumps of {args.count} spheres", lambda: peers.build_clumps(poses, args.count, args.shape)),
         "levelset": (f"level sets ({args.surface_nodes} rays, grid {args.spacing * 1e3:g} mm)",
                      lambda: peers.build_level_sets(poses, args.shape, args.spacing, args.surface_nodes,

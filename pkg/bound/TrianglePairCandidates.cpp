@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "pkg/geom/DeepContactCriterion.hpp"
 
@@ -69,7 +70,8 @@ bool canTouch(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, 
   const RoundedTriangle& p = mesh1.rounded(s);
   const RoundedTriangle& q = mesh2.rounded(t);
   const Real balls = p.circumradius + q.circumradius + reach;
-  if ((rotation * q.circumcentre + translation - p.circumcentre).squaredNorm() > balls * balls) return false;
+  const Vector3r qCircumcentre = rotation * q.circumcentre + translation;
+  if ((qCircumcentre - p.circumcentre).squaredNorm() > balls * balls) return false;
   const Vector3r d = rotation * q.sphereCentre + translation - p.sphereCentre;
   const Real distance = d.norm();
   const Real turn = skin / mesh2.sphereBoundRadius();  // the largest rotation within the skin [rad]
@@ -86,8 +88,16 @@ bool canTouch(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, 
   const Real tilt = std::min(Real(2), 2 * moved / distance);
   const Real aMax = std::sqrt(std::max(overlap + moved, Real(0)) * p.radius * q.radius / (p.radius + q.radius));
   const Real shift = moved + std::abs(x) * tilt;
-  // Projections on the plane now; a point at distance l from c shifts in it by at most shift + l tilt, and
-  // the partner's corners also move by at most skin.
+  // A point at distance l from c shifts in the plane by at most shift + l tilt, and the partner's corners also
+  // move by at most skin. First the projected circumcircles, which hold the projected triangles: each must come
+  // within a_max of c.
+  for (const auto& [centre, radius] : {std::pair<Vector3r, Real>(p.circumcentre, p.circumradius),
+                                       std::pair<Vector3r, Real>(qCircumcentre, q.circumradius)}) {
+    const Vector3r offset = centre - c;
+    const Real reachable = aMax + radius + shift + (offset.norm() + radius) * tilt + skin;
+    if (offset.squaredNorm() - std::pow(offset.dot(n), 2) > reachable * reachable) return false;
+  }
+  // Then the projected triangles themselves, on the plane now.
   const Vector3r u = n.unitOrthogonal(), v = n.cross(u);
   const std::array<Vector3r, 3> xp = corners(mesh1, s, Matrix3r::Identity(), Vector3r::Zero());
   const std::array<Vector3r, 3> xq = corners(mesh2, t, rotation, translation);

@@ -50,7 +50,8 @@ from yade import (Bo1_LevelSet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, Ig2_LevelSe
                   Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin, LevelSet, RegularGrid)
 from yade.minieigenHP import Quaternion, Vector3, Vector3i
 
-from . import shapes
+from . import scene, shapes
+from ._core import HertzMaterial
 
 # Scene S1 (doc/scenes.md)
 RADIUS = 0.025                 # volume-equivalent radius r [m]
@@ -244,6 +245,28 @@ def build_spheres(poses):
         ids.append(O.bodies.append(body))
     _set_engines([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()], [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
                  particle, box)
+    return ids
+
+
+def build_rounded(poses, name="gummy_bear"):
+    """S1 with one rounded body of Mesh.reference_shape(name) per pose (resets O), with S1's HertzMaterials
+    (Eq. 7 damping A on both) and the roundedmesh engine: the representation the others are compared with.
+    Returns the bodies' ids."""
+    O.reset()
+    mesh = shapes.reference_shape(name)
+    particle = HertzMaterial(damping=DAMPING_CONSTANT, **PARTICLE)
+    ids = []
+    for pose in poses:
+        position, ori, velocity, angular = _pose(pose)
+        body = scene.add_body(mesh, position, ori, particle)
+        O.bodies[body].state.vel, O.bodies[body].state.angVel = velocity, angular
+        ids.append(body)
+    for wall in (utils.wall(0, axis=2, sense=1), utils.wall(-HALF_BASE, axis=0, sense=1),
+                 utils.wall(HALF_BASE, axis=0, sense=-1), utils.wall(-HALF_BASE, axis=1, sense=1),
+                 utils.wall(HALF_BASE, axis=1, sense=-1)):
+        scene.assign_material(O.bodies.append(wall), HertzMaterial(damping=DAMPING_CONSTANT, **BOX))
+    O.engines = [ForceResetter(), scene.engine(), NewtonIntegrator(damping=0, gravity=(0, 0, -GRAVITY))]
+    O.dt = TIME_STEP
     return ids
 
 
