@@ -52,7 +52,10 @@ from roundedmesh.benchmarking import machine, step_times_ms  # noqa: E402
 from roundedmesh.progress import Progress  # noqa: E402
 
 STATE_COLUMNS = ["x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz"]
-ENGINES = ["ForceResetter", "InsertionSortCollider", "InteractionLoop", "NewtonIntegrator"]
+ENGINES = ["ForceResetter", "InsertionSortCollider", "InteractionLoop", "roundedmesh PyRunner", "NewtonIntegrator"]
+# rm.statistics()'s stage times: states read from YADE, broad phase, pairs (lists, narrow phase, law), sums,
+# forces written to YADE.
+ROUNDEDMESH_STAGES = ["read_ms", "broad_phase_ms", "pairs_ms", "reduction_ms", "write_ms"]
 
 
 def read_poses(path, shape):
@@ -105,7 +108,8 @@ def largest_speed(ids):
 
 
 def engine_split(steps):
-    """Runs `steps` steps with YADE's engine timing on; returns {engine or part: ms per step}."""
+    """Runs `steps` steps with YADE's engine timing on; returns {engine or part: ms per step}. With rounded bodies,
+    also the roundedmesh engine's own stages (rm.statistics()) over as many further steps, run one by one."""
     O.timingEnabled = True
     for engine in O.engines:
         engine.execTime, engine.execCount = 0, 0
@@ -113,9 +117,18 @@ def engine_split(steps):
     O.run(steps, True)
     wall = time.perf_counter() - start
     O.timingEnabled = False
-    split = {type(engine).__name__: engine.execTime * 1e-6 / steps for engine in O.engines}
+    split = {("roundedmesh PyRunner" if type(engine).__name__ == "PyRunner" else type(engine).__name__):
+             engine.execTime * 1e-6 / steps for engine in O.engines}
     split["YADE loop, rest"] = wall * 1e3 / steps - sum(split.values())
     split["whole step (timed block)"] = wall * 1e3 / steps
+    if rm.rounded_bodies():
+        stages = dict.fromkeys(ROUNDEDMESH_STAGES, 0.0)
+        for _ in range(steps):
+            O.step()
+            statistics = rm.statistics()
+            for stage in stages:
+                stages[stage] += statistics[stage] / steps
+        split.update({f"  roundedmesh {stage}": value for stage, value in stages.items()})
     return split
 
 
@@ -210,11 +223,12 @@ def main(argv):
     for r in results:
         print(f"{r['representation']:44} {r['median_wall_ms']:13.3f} {r['median_cpu_ms']:12.3f} "
               f"{r['real_interactions']:12d} {r['touching_body_pairs']:11d} {r['body_wall_pairs']:10d}")
-    parts = ENGINES + ["YADE loop, rest", "whole step (timed block)"]
+    parts = ENGINES + ["YADE loop, rest", "whole step (timed block)"] + [f"  roundedmesh {stage}" for stage in
+                                                                        ROUNDEDMESH_STAGES]
     print("\nsplit of one timed block [ms/step] (O.timingEnabled)")
-    print(f"{'':26}" + "".join(f"{r['key']:>12}" for r in results))
+    print(f"{'':32}" + "".join(f"{r['key']:>12}" for r in results))
     for part in parts:
-        print(f"{part:26}" + "".join(f"{r['split'].get(part, math.nan):12.3f}" for r in results))
+        print(f"{part:32}" + "".join(f"{r['split'].get(part, math.nan):12.3f}" for r in results))
 
     os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
     fields = [k for k in results[0] if k not in ("split", "key")]
