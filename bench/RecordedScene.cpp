@@ -65,19 +65,46 @@ BodyState state(const double* v) {
   return s;
 }
 
+RecordedScene::Trajectory readTrajectory(const std::string& path, size_t expectedBodies) {
+  std::ifstream bin = open(path, std::ios::binary);
+  const std::string magic = "roundedmesh trajectory 1\n";
+  std::string read(magic.size(), '\0');
+  std::int32_t bodies = 0, steps = 0;
+  double dt = 0;
+  bin.read(read.data(), read.size());
+  bin.read(reinterpret_cast<char*>(&bodies), 4).read(reinterpret_cast<char*>(&steps), 4).read(reinterpret_cast<char*>(&dt), 8);
+  if (!bin || read != magic || bodies != static_cast<int>(expectedBodies) || steps < 2)
+    malformed(path, "not a trajectory of the settled packing's bodies and floor");
+  std::vector<std::int32_t> ids(bodies);
+  bin.read(reinterpret_cast<char*>(ids.data()), 4 * bodies);
+  std::vector<float> frame(13 * bodies);
+  RecordedScene::Trajectory trajectory;
+  for (int k = 0; k < steps; ++k) {
+    if (!bin.read(reinterpret_cast<char*>(frame.data()), 4 * frame.size())) malformed(path, "truncated");
+    std::vector<BodyState>& states = trajectory.emplace_back(bodies);
+    for (int b = 0; b < bodies; ++b) {
+      double v[13];
+      for (int i = 0; i < 13; ++i) v[i] = frame[13 * b + i];
+      states[b] = state(v);
+    }
+  }
+  return trajectory;
+}
+
 }  // namespace
 
-void RecordedScene::setStates(ContactData& data, int frame) const {
+void RecordedScene::setStates(ContactData& data) const {
   data.resize(model);
-  if (frame < 0) {
-    data.bodyStates = bodyStates;
-    data.partnerStates = partnerStates;
-    return;
-  }
-  const std::vector<BodyState>& f = frames[frame];
-  std::copy(f.begin(), f.begin() + bodyStates.size(), data.bodyStates.begin());
+  data.bodyStates = bodyStates;
   data.partnerStates = partnerStates;
-  data.partnerStates[0] = f.back();
+}
+
+void RecordedScene::setStates(ContactData& data, const Trajectory& trajectory, int k) const {
+  data.resize(model);
+  const std::vector<BodyState>& frame = trajectory[k];
+  std::copy(frame.begin(), frame.begin() + bodyStates.size(), data.bodyStates.begin());
+  data.partnerStates = partnerStates;
+  data.partnerStates[0] = frame.back();
 }
 
 RecordedScene loadRecordedScene(const std::string& folder) {
@@ -116,28 +143,8 @@ RecordedScene loadRecordedScene(const std::string& folder) {
   if (scene.model.partners.empty() || std::get<Wall>(scene.model.partners[0].shape).axis != 2)
     malformed(settled, "the floor (wallz+) must be the first wall");
 
-  const std::string shaking = folder + "/s1_shaking.bin";
-  std::ifstream bin = open(shaking, std::ios::binary);
-  const std::string magic = "roundedmesh trajectory 1\n";
-  std::string read(magic.size(), '\0');
-  std::int32_t bodies = 0, steps = 0;
-  double dt = 0;
-  bin.read(read.data(), read.size());
-  bin.read(reinterpret_cast<char*>(&bodies), 4).read(reinterpret_cast<char*>(&steps), 4).read(reinterpret_cast<char*>(&dt), 8);
-  if (!bin || read != magic || bodies != static_cast<int>(scene.bodyStates.size()) + 1 || steps < 1)
-    malformed(shaking, "not a trajectory of the settled packing's bodies and floor");
-  std::vector<std::int32_t> ids(bodies);
-  bin.read(reinterpret_cast<char*>(ids.data()), 4 * bodies);
-  std::vector<float> frame(13 * bodies);
-  for (int k = 0; k < steps; ++k) {
-    if (!bin.read(reinterpret_cast<char*>(frame.data()), 4 * frame.size())) malformed(shaking, "truncated");
-    std::vector<BodyState>& states = scene.frames.emplace_back(bodies);
-    for (int b = 0; b < bodies; ++b) {
-      double v[13];
-      for (int i = 0; i < 13; ++i) v[i] = frame[13 * b + i];
-      states[b] = state(v);
-    }
-  }
+  scene.shaking = readTrajectory(folder + "/s1_shaking.bin", scene.bodyStates.size() + 1);
+  scene.resting = readTrajectory(folder + "/s1_resting.bin", scene.bodyStates.size() + 1);
   return scene;
 }
 

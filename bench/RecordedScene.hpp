@@ -1,7 +1,7 @@
 // Scene S1 as scripts/record_s1_scene.py recorded it (bench/data): 250 gummy bears and the box's five YADE
-// Walls, with S1's materials, as a ContactModel; the settled packing's states; and the states of the first
-// steps of shaking. Lets the benchmark and the tests run the complete contact step on a real packing, without
-// YADE or Python.
+// Walls, with S1's materials, as a ContactModel; the settled packing's states; and two trajectories from it,
+// the first steps of shaking and as many steps in the standing box. Lets the benchmark and the tests run the
+// complete contact step on a real packing, without YADE or Python.
 #pragma once
 
 #include <string>
@@ -15,11 +15,14 @@ struct RecordedScene {
   ContactModel model;
   std::vector<BodyState> bodyStates;     // settled packing, in the model's body order
   std::vector<BodyState> partnerStates;  // the walls
-  // Shaking: frames[k] holds every body's state at step k, then the floor's (partner 0).
-  std::vector<std::vector<BodyState>> frames;
+  // trajectory[k]: every body's state at step k, then the floor's (partner 0).
+  using Trajectory = std::vector<std::vector<BodyState>>;
+  Trajectory shaking, resting;
 
-  // Puts frame k (or the settled packing, for k < 0) into data.
-  void setStates(ContactData& data, int frame) const;
+  // Puts the settled packing into data.
+  void setStates(ContactData& data) const;
+  // Puts step k of a trajectory into data.
+  void setStates(ContactData& data, const Trajectory& trajectory, int k) const;
 };
 
 // Reads bench/data (ROUNDEDMESH_BENCH_DATA at build time, or `folder`). Throws std::runtime_error naming the

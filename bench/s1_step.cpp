@@ -1,8 +1,9 @@
 // Google Benchmark of the complete C++ contact step on scene S1 with 250 gummy bears (bench/data, recorded
 // by scripts/record_s1_scene.py), without YADE or Python, and of its two per-contact stages alone:
-//   BM_S1Step/threads/moving/skin/steps/near   one RoundedMeshEngine step; moving = 0: the settled packing again and again
-//                              (the lists kept between steps stay valid), 1: the recorded steps of shaking in
-//                              order, forth and back (the lists are rebuilt as the bodies move)
+//   BM_S1Step/threads/motion/skin/steps/near   one RoundedMeshEngine step; motion = 0: the settled packing
+//                              again and again (the lists kept between steps stay valid), 1: the recorded steps
+//                              of shaking in order, forth and back (the lists are rebuilt as the bodies move),
+//                              2: the recorded steps of the packing resting in the standing box (it rattles)
 //   BM_S1NarrowPhase           Ig2 over every pair's candidates of the settled packing (time per contact)
 //   BM_S1Load                  Law2, node forces and friction over its triangle contacts (time per contact)
 // Counters per step: body pairs, candidates, contacts, candidates per contact, list rebuilds, stage times.
@@ -30,7 +31,8 @@ int frameAt(long step, int frames) {
 
 void BM_S1Step(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(0));
-  const bool moving = state.range(1);
+  const int motion = static_cast<int>(state.range(1));
+  const RecordedScene::Trajectory* trajectory = motion == 1 ? &scene().shaking : motion == 2 ? &scene().resting : nullptr;
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
   ContactModel model = scene().model;
@@ -38,13 +40,16 @@ void BM_S1Step(benchmark::State& state) {
   if (state.range(3) > 0) model.skins.candidateSteps = static_cast<Real>(state.range(3));
   if (state.range(4) > 0) model.skins.nearFactor = static_cast<Real>(state.range(4));
   ContactData data;
-  scene().setStates(data, moving ? 0 : -1);
+  if (trajectory)
+    scene().setStates(data, *trajectory, 0);
+  else
+    scene().setStates(data);
   for (int warmup = 0; warmup < 2; ++warmup) RoundedMeshEngine(model, data);  // builds and trims the lists
   ContactStatistics total;
   StageTimes times;
   long steps = 0;
   for (auto _ : state) {
-    if (moving) scene().setStates(data, frameAt(++steps, static_cast<int>(scene().frames.size())));
+    if (trajectory) scene().setStates(data, *trajectory, frameAt(++steps, static_cast<int>(trajectory->size())));
     RoundedMeshEngine(model, data);
     total += data.statistics;
     times.broadPhase += data.times.broadPhase;
@@ -70,14 +75,15 @@ void BM_S1Step(benchmark::State& state) {
   state.counters["broad_ms"] = benchmark::Counter(1e3 * times.broadPhase, perStep);
   state.counters["pairs_ms"] = benchmark::Counter(1e3 * times.pairs, perStep);
   state.counters["reduction_ms"] = benchmark::Counter(1e3 * times.reduction, perStep);
-  state.SetLabel(std::string(moving ? "shaking" : "settled") + ", " + std::to_string(threads) + " thread(s)");
+  state.SetLabel(std::string(motion == 1 ? "shaking" : motion == 2 ? "resting" : "settled") + ", " +
+                 std::to_string(threads) + " thread(s)");
 }
-BENCHMARK(BM_S1Step)->ArgsProduct({{1, 2}, {0, 1}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({{1, 2}, {0, 1, 2}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // The lists' parameters (0: the model's default): a fixed skin in 1e-4 of the smaller volume-equivalent
 // radius, instead of one that follows each pair's motion; the steps a list is meant to last; the near list's
 // skin as a multiple of the candidates'.
 BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {20, 80}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {1}, {0}, {5, 20, 40}, {3, 5, 10}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {1, 2}, {0}, {5, 20, 40}, {3, 5, 10}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The settled packing after one step: its pairs with their candidate lists, and every pair's contacts.
 struct SettledStep {
@@ -86,7 +92,7 @@ struct SettledStep {
   long contacts = 0;
 
   SettledStep() {
-    scene().setStates(data, -1);
+    scene().setStates(data);
     RoundedMeshEngine(scene().model, data);
     for (const BodyPair& pair : data.pairs) {
       ContactStatistics statistics;

@@ -7,6 +7,8 @@
     bench/data/s1_settled.csv     the settled packing: every bear's and wall's state (full double precision)
     bench/data/s1_shaking.bin     the first `--steps` steps of S1's shaking started from the settled packing:
                                   every bear's and the floor's state at every step (float32, see below)
+    bench/data/s1_resting.bin     the same number of steps of the settled packing in the standing box: the bears
+                                  still rattle and spin (up to 3 rad/s), as they do in YADE after settling
 
 The settled packing comes from scripts/bench_shaken_bears.py, which lets the bears fall from S1's lattice into
 the standing box and saves the settled scene; this script loads it, writes the packing, then moves the floor as
@@ -15,7 +17,7 @@ S1 shakes the box, z = A sin(2 pi t / T) (A = 0.025 m, T = 0.25 s), and records 
     /usr/bin/python3 scripts/bench_shaken_bears.py --rebuild --settle-dt 5e-4 --settle-damping 0.3
     /usr/bin/python3 scripts/record_s1_scene.py [--settled out/bench_shaken_bears/settled.yade.gz] [--steps 200]
 
-s1_shaking.bin: the ASCII line "roundedmesh trajectory 1\n", then int32 body count n, int32 step count m,
+s1_shaking.bin and s1_resting.bin: the ASCII line "roundedmesh trajectory 1\n", then int32 body count n, int32 step count m,
 float64 dt, int32 ids[n], then m frames of n x 13 float32: position (3) [m], orientation quaternion
 (w, x, y, z), velocity (3) [m/s], angular velocity (3) [rad/s], bodies in the order of ids. float32 keeps
 positions to about 2e-8 m, far below the overlaps of the packing (1e-4 m): the benchmark evaluates contacts at
@@ -84,19 +86,20 @@ def floor_id():
     return floors[0]
 
 
-def record_shaking(bears, steps, path):
+def record(bears, steps, path, amplitude):
+    """Records `steps` steps from the saved scene, the box shaken with `amplitude` [m] (0: standing)."""
     floor = floor_id()
     ids = list(bears) + [floor]
     start = O.time
     omega = 2 * math.pi / PERIOD
 
     def drive():  # the box's velocity for the step about to be integrated
-        O.bodies[floor].state.vel = (0, 0, AMPLITUDE * omega * math.cos(omega * (O.time - start + 0.5 * O.dt)))
+        O.bodies[floor].state.vel = (0, 0, amplitude * omega * math.cos(omega * (O.time - start + 0.5 * O.dt)))
 
     frames = np.empty((steps, len(ids), 13), dtype="<f4")
     O.engines = O.engines[:-1] + [PyRunner(command="drive()", iterPeriod=1, initRun=True)] + O.engines[-1:]
     sys.modules["__main__"].drive = drive  # PyRunner commands run in __main__'s namespace
-    reporter = Progress(steps, "shaking")
+    reporter = Progress(steps, os.path.basename(path))
     for k in range(steps):
         O.run(1, True)
         frames[k] = [state_row(O.bodies[i].state) for i in ids]
@@ -112,7 +115,7 @@ def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--settled", default="out/bench_shaken_bears/settled.yade.gz")
     parser.add_argument("--output", default=os.path.join(os.path.dirname(__file__), "..", "bench", "data"))
-    parser.add_argument("--steps", type=int, default=200, help="steps of shaking to record")
+    parser.add_argument("--steps", type=int, default=200, help="steps of each trajectory to record")
     args = parser.parse_args(argv)
     if args.steps < 1:
         parser.error("--steps must be positive")
@@ -124,8 +127,11 @@ def main(argv):
     bears = sorted(meshes)
     write_mesh(meshes[bears[0]], os.path.join(args.output, "gummy_bear.mesh"))
     write_settled(bears, os.path.join(args.output, "s1_settled.csv"))
-    record_shaking(bears, args.steps, os.path.join(args.output, "s1_shaking.bin"))
-    print(f"wrote gummy_bear.mesh, s1_settled.csv and s1_shaking.bin ({args.steps} steps) to {args.output}")
+    record(bears, args.steps, os.path.join(args.output, "s1_shaking.bin"), AMPLITUDE)
+    O.load(args.settled)
+    record(bears, args.steps, os.path.join(args.output, "s1_resting.bin"), 0.0)
+    print(f"wrote gummy_bear.mesh, s1_settled.csv, s1_shaking.bin and s1_resting.bin ({args.steps} steps each) to "
+          f"{args.output}")
 
 
 main(sys.argv[1:])

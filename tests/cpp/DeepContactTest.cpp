@@ -122,7 +122,7 @@ TEST(DeepContact, FarPairsOfTheS1PackingAreRejected) {
   model.bodies = {scene.model.bodies[0], scene.model.bodies[1]};
   ContactData data;
   data.resize(model);
-  data.bodyStates = {scene.frames[59][0], scene.frames[59][1]};
+  data.bodyStates = {scene.shaking[59][0], scene.shaking[59][1]};
   const std::vector<PressureGeom> appendixB = bruteForce(model, data, std::numeric_limits<Real>::infinity());
   const std::vector<PressureGeom> criterion = bruteForce(model, data, shallow(model));
   int far = 0, shallowOnes = 0;

@@ -53,7 +53,7 @@ TEST(RecordedScene, EngineFindsWhatBruteForceFinds) {
   ContactData data;
   int compared = 0, touching = 0;
   for (int step = 0; step < 60; ++step) {
-    scene().setStates(data, step);
+    scene().setStates(data, scene().shaking, step);
     RoundedMeshEngine(model, data);
     if (step % 20 != 0 && step != 59) continue;
     int inContact = 0, apart = 0;
@@ -85,7 +85,7 @@ TEST(RecordedScene, SameResultOnAnyNumberOfThreads) {
   for (int n = 1; n <= 2; ++n) {
     omp_set_num_threads(n);
     for (int step = 0; step < 10; ++step) {
-      scene().setStates(runs[n - 1], step);
+      scene().setStates(runs[n - 1], scene().shaking, step);
       RoundedMeshEngine(scene().model, runs[n - 1]);
     }
   }
