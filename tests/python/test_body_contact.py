@@ -168,3 +168,46 @@ def test_statistics_report_the_funnel_of_the_last_step():
     assert s["candidates"] == contacts + rejected
     assert s["candidate_rebuilds"] in (0, 1) and s["neighbour_rebuilds"] in (0, 1)
     assert s["pairs_ms"] > 0 and s["broad_phase_ms"] >= 0 and s["reduction_ms"] >= 0
+
+
+# Members of one clump do not touch each other: two pears clumped while overlapping (158 triangle contacts
+# between them before) exchange no force, and the clump resting on a wall carries exactly its weight (the wall
+# force balances gravity to 1e-6 once still: damping 0.5 leaves velocities of 1e-9 m/s after 2 s).
+def test_members_of_one_clump_do_not_touch():
+    O.reset()
+    pear = rm.Mesh.reference_shape("pear")
+    first = rm.add_body(pear, pos=(0, 0, 0.05), material=RUBBER)
+    second = rm.add_body(pear, pos=(0.03, 0, 0.05), ori=turned(1.0, (0, 1, 0)), material=RUBBER)
+    overlapping = rm.triangle_contacts(pear, (0, 0, 0.05), Quaternion.Identity, pear, (0.03, 0, 0.05),
+                                       turned(1.0, (0, 1, 0)), RUBBER, RUBBER)
+    assert len(overlapping["triangle1"]) > 10
+    clump = O.bodies.clump([first, second])
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, 0), damping=0)]
+    O.dt = 1e-5
+    O.step()
+    assert O.forces.f(first).norm() == 0 and O.forces.f(second).norm() == 0
+    assert rm.statistics()["body_pairs"] == 0
+    wall = O.bodies.append(utils.wall(0, axis=2, sense=1))
+    rm.assign_material(wall, RUBBER)
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.5)]
+    O.dt = 0.2 * rm.critical_timestep()
+    O.run(int(2.0 / O.dt), True)
+    assert O.forces.f(wall)[2] == pytest.approx(-O.bodies[clump].state.mass * 9.81, rel=1e-6)
+
+
+# A rounded body whose state becomes non-finite mid-run stops the run with one message that names it, before
+# any force of that step is applied.
+def test_a_non_finite_state_stops_the_run_naming_the_body():
+    O.reset()
+    mesh = rm.Mesh.icosphere(0.025, 2)
+    ball = rm.add_body(mesh, pos=(0, 0, 0.0245), material=RUBBER)
+    wall = O.bodies.append(utils.wall(0, axis=2, sense=1))
+    rm.assign_material(wall, RUBBER)
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
+    O.dt = 0.1 * rm.critical_timestep()
+    O.run(10, True)
+    O.bodies[ball].state.vel = (0, math.nan, 0)
+    iteration = O.iter
+    with pytest.raises(RuntimeError, match=rf"body {ball}: its velocity is not finite"):
+        O.step()
+    assert O.iter == iteration
