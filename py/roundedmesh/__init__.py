@@ -12,10 +12,10 @@ discrete element method", Comput. Methods Appl. Mech. Engrg. 277 (2014) 219-238,
     O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
 
 The submodules come with the package (rm.export, rm.progress, rm.scenes, rm.analytic, rm.validation,
-rm.benchmarking, rm.shapes, rm.contact, rm.scene, rm.meshfiles). See doc/user-guide.md.
+rm.benchmarking, rm.shapes, rm.contact, rm.scene, rm.meshfiles, rm.checkpoint). See doc/user-guide.md.
 """
 from . import _yade  # noqa: F401  (YADE's converters must exist before _core returns vectors)
-from . import analytic, benchmarking, contact, export, meshfiles, progress, scene, scenes, shapes, validation  # noqa: F401
+from . import analytic, benchmarking, checkpoint, contact, export, meshfiles, progress, scene, scenes, shapes, validation  # noqa: F401
 from ._core import HertzMaterial, Mesh, plane_contact
 from .contact import body_contact, sphere_contact, triangle_contacts
 from .scene import _restore_mesh  # noqa: F401  (Mesh.__reduce__ names it as roundedmesh._restore_mesh)
