@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <sstream>
 #include <vector>
 
@@ -61,13 +62,22 @@ TriangleSurface readMeshFile(const std::string& path, Real scale) {
   // CGAL's extension dispatch is case-sensitive; the format was already recognised above.
   std::ifstream in(path, std::ios::binary);
   bool read = false;
-  if (kind == "obj") read = CGAL::IO::read_OBJ(in, points, polygons);
-  else if (kind == "off") read = CGAL::IO::read_OFF(in, points, polygons);
-  else if (kind == "ply") {
-    requirePlyElementBeforeProperty(path);
-    read = CGAL::IO::read_PLY(in, points, polygons, CGAL::parameters::verbose(false));
+  // CGAL's readers take counts and indices from the file as they stand: a negative count becomes a huge
+  // size, and the vector resized to it throws std::length_error or std::bad_alloc (found by
+  // fuzz/off_reader_fuzzer, doc/reliability.md). That is a broken file, not a failure of the program.
+  try {
+    if (kind == "obj") read = CGAL::IO::read_OBJ(in, points, polygons);
+    else if (kind == "off") read = CGAL::IO::read_OFF(in, points, polygons);
+    else if (kind == "ply") {
+      requirePlyElementBeforeProperty(path);
+      read = CGAL::IO::read_PLY(in, points, polygons, CGAL::parameters::verbose(false));
+    }
+    else read = CGAL::IO::read_STL(in, points, polygons, CGAL::parameters::verbose(false));
+  } catch (const std::length_error&) {
+    read = false;
+  } catch (const std::bad_alloc&) {
+    read = false;
   }
-  else read = CGAL::IO::read_STL(in, points, polygons, CGAL::parameters::verbose(false));
   if (!read)
     throw std::invalid_argument(path + ": cannot be read as " + kind +
                                 " (truncated, corrupt, or not a mesh file of that format)");

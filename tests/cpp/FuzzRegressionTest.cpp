@@ -56,5 +56,12 @@ TEST(FuzzRegression, OffNegativeCornerIndexIsRefused) {
   EXPECT_EQ(message.rfind(kData + "negative_index_cast.off: ", 0), 0u) << message;
 }
 
+// off_reader_fuzzer: a corner count of -41 became a huge size in CGAL's OFF reader, whose vector then threw
+// std::length_error out of readMeshFile (an exception no caller expects of a broken file).
+TEST(FuzzRegression, OffNegativeCountIsRefused) {
+  const std::string message = refusal([] { readMeshFile(kData + "negative_count.off"); });
+  EXPECT_EQ(message.rfind(kData + "negative_count.off: cannot be read as off", 0), 0u) << message;
+}
+
 }  // namespace
 }  // namespace roundedmesh

@@ -35,7 +35,7 @@ constexpr Real kSwitchJump = 0.16;
 // Change allowed for a step without a switch, relative to the whole-circle force and to step / delta_s: the
 // delta^1.5 law alone moves by 1.5 step / delta_s and the damping term by 0.5 step / delta_s; the approach rate
 // itself changes as n12 and c move with the step, which the random spins (up to 10 rad/s) make comparable.
-// Measured worst 4.8 over 10^6 pairs (doc/reliability.md); 10 leaves a margin while still catching any jump
+// Measured worst 6.8 over 10^6 pairs (doc/reliability.md); 10 leaves a margin while still catching any jump
 // (a jump is ~ delta_s / step = 1e5 times larger on this scale).
 constexpr Real kSmoothSlope = 10.0;
 
