@@ -63,5 +63,12 @@ TEST(FuzzRegression, OffNegativeCountIsRefused) {
   EXPECT_EQ(message.rfind(kData + "negative_count.off: cannot be read as off", 0), 0u) << message;
 }
 
+// off_reader_fuzzer (in CI's 15 s): a binary OFF header declaring 1229865216 edges, which CGAL's header reader
+// doubles as an int (signed overflow in CGAL, suppressed by fuzz/ubsan.supp); the file must still be refused.
+TEST(FuzzRegression, OffEdgeCountOverflowIsRefused) {
+  const std::string message = refusal([] { readMeshFile(kData + "edge_count_overflow.off"); });
+  EXPECT_EQ(message.rfind(kData + "edge_count_overflow.off: ", 0), 0u) << message;
+}
+
 }  // namespace
 }  // namespace roundedmesh
