@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
     bodySlopeViolations += check.worstSlope > kSmoothSlope;
     bodyJumpViolations += check.worstJump > kSwitchJump;
   }
-  std::printf("body pairs: %ld, touching %ld, triangle contacts %ld, switches within a step %ld, non-finite %ld\n",
+  std::printf("body pairs: %ld, touching %ld, triangle contacts %ld, switches crossed %ld, non-finite %ld\n",
               bodyPairs, touching, triangleContacts, bodySwitches, bodyNonFinite);
   std::printf("  worst change without a switch %.3g (bound %.3g), %ld pairs over\n", bodyWorstSlope, kSmoothSlope,
               bodySlopeViolations);

@@ -298,20 +298,27 @@ BodyPairCase randomBodyPair(Source& random, const std::vector<RoundedBody>& unit
 struct BodyPairCheck {
   int contacts = 0;
   bool finite = true;   // wrenches and every triangle contact
-  Real worstSlope = 0;  // over the triangle contacts kept through the step, as for a triangle pair
-  Real worstJump = 0;   // over those that switched regime or sliding within the step
+  Real worstSlope = 0;  // over the triangle contacts kept through a tiny step, as for a triangle pair
+  Real worstJump = 0;   // over the switches found along a longer move, each bisected
   int switches = 0;
 };
 
-// The pair through resolvePair, then again with body 2 moved by `step` (a fraction of the scale) in a random
-// direction; each triangle contact found both times is checked as a triangle pair is (slope without a switch,
-// jump with one, less the smooth change the step itself allows).
+// The pair through resolvePair at its pose, then with body 2 moved by `step` and by `scan` (fractions of the
+// smaller equivalent radius) in two random directions. Each triangle contact found at the pose and after the
+// step, in the same state, gives a slope as a triangle pair does. Each found at the pose and after the longer
+// move in another state (regime or sliding) is bisected along the move, to 1e-10 of the radius, and gives a
+// jump; a contact that ends somewhere within the move is left to the triangle pairs' scans.
 template <class Source>
-BodyPairCheck checkBodyPair(BodyPairCase& c, Source& random, Real step = 1e-7) {
+BodyPairCheck checkBodyPair(BodyPairCase& c, Source& random, Real step = 1e-7, Real scan = 1e-4) {
   BodyPairCheck check;
   const HertzPhys phys = Ip2_HertzMaterial_HertzMaterial_HertzPhys(c.model.bodies[0].material, c.model.bodies[1].material);
+  const Real radius = std::min(c.model.bodies[0].equivalentRadius, c.model.bodies[1].equivalentRadius);
+  const Vector3r origin = c.data.bodyStates[1].position;
   std::vector<PressureGeom> scratch;
-  auto resolve = [&](std::vector<TriangleContact>& contacts) {
+  std::vector<TriangleContact> contacts;
+  auto at = [&](const Vector3r& shift) {
+    c.data.bodyStates[1].position = origin + shift;
+    contacts.clear();
     const PairResult r = resolvePair(c.model, c.data, {0, 1}, scratch, &contacts);
     check.finite = check.finite && r.onBody.force.allFinite() && r.onBody.torque.allFinite() &&
                    r.onOther.force.allFinite() && r.onOther.torque.allFinite();
@@ -323,25 +330,36 @@ BodyPairCheck checkBodyPair(BodyPairCase& c, Source& random, Real step = 1e-7) {
     }
     return outcomes;
   };
-  std::vector<TriangleContact> before, after;
-  const auto here = resolve(before);
+  const auto here = at(Vector3r::Zero());
   check.contacts = int(here.size());
-  const Real h = step * c.model.bodies[0].equivalentRadius;
-  c.data.bodyStates[1].position += h * random.direction();
-  const auto moved = resolve(after);
+  const Vector3r small = step * radius * random.direction(), large = scan * radius * random.direction();
+  const auto stepped = at(small);
   for (const auto& [key, a] : here) {
-    const auto found = moved.find(key);
-    if (found == moved.end() || !(a.scale > 0)) continue;
-    const Outcome& b = found->second;
-    const Real smooth = h / a.sphereOverlap;
-    if (sameState(a, b)) {
-      check.worstSlope = std::max(check.worstSlope, forceChange(a, b) / a.scale / smooth);
-    } else {
-      ++check.switches;
-      check.worstJump = std::max(check.worstJump,
-                                 forceChange(a, b) / std::max(a.scale, b.scale) - kSmoothSlope * smooth);
-    }
+    const auto found = stepped.find(key);
+    if (found != stepped.end() && a.scale > 0 && sameState(a, found->second))
+      check.worstSlope = std::max(check.worstSlope,
+                                  forceChange(a, found->second) / a.scale / (small.norm() / a.sphereOverlap));
   }
+  const auto moved = at(large);
+  for (const auto& [key, first] : here) {
+    const auto found = moved.find(key);
+    if (found == moved.end() || sameState(first, found->second)) continue;
+    Real lo = 0, hi = 1;
+    Outcome a = first, b = found->second;
+    bool kept = true;
+    while (kept && (hi - lo) * scan > 1e-10) {
+      const Real mid = 0.5 * (lo + hi);
+      const auto outcomes = at(mid * large);
+      const auto m = outcomes.find(key);
+      kept = m != outcomes.end();
+      if (!kept) break;
+      if (sameState(a, m->second)) lo = mid, a = m->second; else hi = mid, b = m->second;
+    }
+    if (!kept) continue;
+    ++check.switches;
+    check.worstJump = std::max(check.worstJump, forceChange(a, b) / std::max(a.scale, b.scale));
+  }
+  c.data.bodyStates[1].position = origin;
   return check;
 }
 
