@@ -1,6 +1,7 @@
 #include "pkg/io/MeshFile.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/OFF/File_scanner_OFF.h>
 #include <CGAL/IO/polygon_soup_io.h>
 
 #include <algorithm>
@@ -9,6 +10,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <new>
+#include <sstream>
 #include <vector>
 
 #include "pkg/shape/SurfaceRepair.hpp"
@@ -28,6 +31,63 @@ std::string format(const std::string& path) {
   return extension;
 }
 
+// CGAL 5.5's PLY reader adds a "property" to the last "element" read so far without checking that there is
+// one: a property before any element reads through an empty vector (found by fuzz/ply_reader_fuzzer,
+// doc/reliability.md). Such a header is refused here, before CGAL sees it.
+void requirePlyElementBeforeProperty(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "element" || keyword == "end_header") return;
+    if (keyword == "property")
+      throw std::invalid_argument(path + ": PLY header line " + std::to_string(number) +
+                                  " declares a property before any element");
+  }
+}
+
+// CGAL 5.5's read_OFF, with every count it takes from the file checked against the file's size before it
+// sizes a vector by it: CGAL's own reader resizes to the header's counts and to each face's corner count as
+// they stand, and a negative one (converted to std::size_t, undefined behaviour it does not check; see
+// fuzz/ubsan.supp) or an absurd one asks for terabytes (found by fuzz/off_reader_fuzzer, doc/reliability.md).
+// Nothing in a file can need more entries than it has bytes. Normals, colours and textures are skipped.
+bool readOff(std::istream& in, std::uintmax_t fileSize, std::vector<Point>& points,
+             std::vector<std::vector<std::size_t>>& polygons) {
+  CGAL::File_scanner_OFF scanner(in);
+  if (in.fail() || scanner.size_of_vertices() + scanner.size_of_facets() > fileSize) return false;
+  points.resize(scanner.size_of_vertices());
+  polygons.resize(scanner.size_of_facets());
+  for (Point& point : points) {
+    double x = 0, y = 0, z = 0, w = 1, ignored = 0;
+    unsigned char colour = 0;
+    scanner.scan_vertex(x, y, z, w);
+    point = Point(x / w, y / w, z / w);
+    if (scanner.has_normals()) scanner.scan_normal(ignored, ignored, ignored);
+    if (scanner.has_vcolors()) scanner.scan_color(colour, colour, colour);
+    if (scanner.has_textures()) scanner.scan_texture(ignored, ignored);
+    if (!in.good()) return false;
+  }
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    std::size_t corners = std::size_t(-1);
+    scanner.scan_facet(corners, f);
+    if ((!in.eof() && !in.good()) || corners > fileSize) return false;
+    polygons[f].resize(corners);
+    for (std::size_t j = 0; j < corners; ++j) {
+      std::size_t index = 0;
+      scanner.scan_facet_vertex_index(index, j + 1, f);
+      if (!in || index >= points.size()) return false;
+      polygons[f][j] = index;
+    }
+    if (scanner.has_fcolors()) {
+      unsigned char colour = 0;
+      scanner.scan_color(colour, colour, colour);
+    }
+  }
+  return !in.fail();
+}
+
 }  // namespace
 
 TriangleSurface readMeshFile(const std::string& path, Real scale) {
@@ -43,10 +103,22 @@ TriangleSurface readMeshFile(const std::string& path, Real scale) {
   // CGAL's extension dispatch is case-sensitive; the format was already recognised above.
   std::ifstream in(path, std::ios::binary);
   bool read = false;
-  if (kind == "obj") read = CGAL::IO::read_OBJ(in, points, polygons);
-  else if (kind == "off") read = CGAL::IO::read_OFF(in, points, polygons);
-  else if (kind == "ply") read = CGAL::IO::read_PLY(in, points, polygons, CGAL::parameters::verbose(false));
-  else read = CGAL::IO::read_STL(in, points, polygons, CGAL::parameters::verbose(false));
+  // CGAL's readers take counts and indices from the file as they stand: a negative count becomes a huge
+  // size, and the vector resized to it throws std::length_error or std::bad_alloc (found by
+  // fuzz/off_reader_fuzzer, doc/reliability.md). That is a broken file, not a failure of the program.
+  try {
+    if (kind == "obj") read = CGAL::IO::read_OBJ(in, points, polygons);
+    else if (kind == "off") read = readOff(in, std::filesystem::file_size(path, error), points, polygons);
+    else if (kind == "ply") {
+      requirePlyElementBeforeProperty(path);
+      read = CGAL::IO::read_PLY(in, points, polygons, CGAL::parameters::verbose(false));
+    }
+    else read = CGAL::IO::read_STL(in, points, polygons, CGAL::parameters::verbose(false));
+  } catch (const std::length_error&) {
+    read = false;
+  } catch (const std::bad_alloc&) {
+    read = false;
+  }
   if (!read)
     throw std::invalid_argument(path + ": cannot be read as " + kind +
                                 " (truncated, corrupt, or not a mesh file of that format)");

@@ -3,6 +3,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -199,12 +201,26 @@ Real enclosedVolume(const TriangleSurface& s, const VertexNames& name) {
       throw std::invalid_argument("the surface has " + std::to_string(parts.size()) + " separate parts of opposite " +
                                   "orientation (inside-out pieces, or a cavity), first the part at " +
                                   name(part.firstVertex) + ": orient every part outward");
-  const Real volume = massProperties(s.vertices, s.triangles).volume;
+  const MassProperties mass = massProperties(s.vertices, s.triangles);
+  const Real volume = mass.volume;
   // A closed surface folded flat encloses nothing; round-off alone stays far below 1e-9 of its box.
   if (!(std::abs(volume) > 1e-9 * boundingBox(s.vertices).volume()))
   {
     std::ostringstream message;
     message << "the surface encloses no volume (" << volume << " m^3): it is flat or folded onto itself";
+    throw std::invalid_argument(message.str());
+  }
+  // A solid's principal moments are positive and each at most the sum of the other two (I_x + I_y - I_z is
+  // twice the integral of z^2). A closed, consistently oriented surface that passes through itself counts
+  // some regions negatively and can break either (found by fuzz/obj_reader_fuzzer, doc/reliability.md); its
+  // mass properties would be meaningless. 1e-9 of the trace is far above round-off, far below any real body.
+  const Vector3r moments = (volume > 0 ? 1 : -1) * Eigen::SelfAdjointEigenSolver<Matrix3r>(mass.inertia).eigenvalues();
+  const Real tolerance = 1e-9 * std::abs(moments.sum());
+  if (!(moments.minCoeff() > tolerance && moments.sum() - 2 * moments.maxCoeff() >= -tolerance)) {
+    std::ostringstream message;
+    message << "the surface intersects itself: its principal moments of inertia (" << moments.x() << ", "
+            << moments.y() << ", " << moments.z() << ") m^5 are not those of a solid (each positive and at most the "
+            << "sum of the other two)";
     throw std::invalid_argument(message.str());
   }
   return volume;
