@@ -31,20 +31,42 @@ std::string format(const std::string& path) {
   return extension;
 }
 
-// CGAL 5.5's PLY reader adds a "property" to the last "element" read so far without checking that there is
-// one: a property before any element reads through an empty vector (found by fuzz/ply_reader_fuzzer,
-// doc/reliability.md). Such a header is refused here, before CGAL sees it.
-void requirePlyElementBeforeProperty(const std::string& path) {
+// CGAL 5.5's PLY reader trusts the header (each case found by fuzz/ply_reader_fuzzer, doc/reliability.md):
+// a property before any element is added to the last element of an empty vector; an element's count sizes
+// arrays and loops however few bytes follow (gigabytes, or minutes, from a file of a few hundred bytes); and a
+// vertex coordinate that is not a float or double, or a face's corner list that is not a list, is cast to the
+// type it expects and the null result dereferenced. Such headers are refused here, before CGAL reads the file.
+void requireReadablePlyHeader(const std::string& path, std::uintmax_t fileSize) {
   std::ifstream in(path, std::ios::binary);
-  std::string line;
+  std::string line, element;
   for (int number = 1; std::getline(in, line); ++number) {
+    auto refuse = [&](const std::string& what) {
+      throw std::invalid_argument(path + ": PLY header line " + std::to_string(number) + " " + what);
+    };
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
-    if (keyword == "element" || keyword == "end_header") return;
-    if (keyword == "property")
-      throw std::invalid_argument(path + ": PLY header line " + std::to_string(number) +
-                                  " declares a property before any element");
+    if (keyword == "end_header") return;
+    if (keyword == "element") {
+      double count = -1;
+      words >> element >> count;
+      if (!(count >= 0 && count <= double(fileSize)))
+        refuse("declares " + std::to_string(count) + " elements '" + element + "' in a file of " +
+               std::to_string(fileSize) + " bytes");
+    } else if (keyword == "property") {
+      if (element.empty()) refuse("declares a property before any element");
+      std::string type, name;
+      words >> type;
+      const bool list = type == "list";
+      if (list) words >> type >> type;  // the count's type, then the items'
+      words >> name;
+      const bool real = type == "float" || type == "float32" || type == "double" || type == "float64";
+      if (element == "vertex" && (name == "x" || name == "y" || name == "z") && (list || !real))
+        refuse("declares the vertex coordinate " + name + " as " + (list ? "a list" : "'" + type + "'") +
+               "; it must be a float or a double");
+      if (element == "face" && (name == "vertex_indices" || name == "vertex_index") && !list)
+        refuse("declares the face's " + name + " as one '" + type + "'; it must be a list");
+    }
   }
 }
 
@@ -52,7 +74,10 @@ void requirePlyElementBeforeProperty(const std::string& path) {
 // sizes a vector by it: CGAL's own reader resizes to the header's counts and to each face's corner count as
 // they stand, and a negative one (converted to std::size_t, undefined behaviour it does not check; see
 // fuzz/ubsan.supp) or an absurd one asks for terabytes (found by fuzz/off_reader_fuzzer, doc/reliability.md).
-// Nothing in a file can need more entries than it has bytes. Normals, colours and textures are skipped.
+// Nothing in a file can need more entries than it has bytes. Normals, colours and textures are skipped: in a
+// binary file by reading them, in a text file by not asking for them, since CGAL's scan_normal, scan_color
+// and scan_texture then index the line scan_vertex or scan_facet has read without checking that it holds
+// them (a read through a null pointer on a COFF vertex line without colour: off_reader_fuzzer).
 bool readOff(std::istream& in, std::uintmax_t fileSize, std::vector<Point>& points,
              std::vector<std::vector<std::size_t>>& polygons) {
   CGAL::File_scanner_OFF scanner(in);
@@ -64,9 +89,9 @@ bool readOff(std::istream& in, std::uintmax_t fileSize, std::vector<Point>& poin
     unsigned char colour = 0;
     scanner.scan_vertex(x, y, z, w);
     point = Point(x / w, y / w, z / w);
-    if (scanner.has_normals()) scanner.scan_normal(ignored, ignored, ignored);
-    if (scanner.has_vcolors()) scanner.scan_color(colour, colour, colour);
-    if (scanner.has_textures()) scanner.scan_texture(ignored, ignored);
+    if (scanner.binary() && scanner.has_normals()) scanner.scan_normal(ignored, ignored, ignored);
+    if (scanner.binary() && scanner.has_vcolors()) scanner.scan_color(colour, colour, colour);
+    if (scanner.binary() && scanner.has_textures()) scanner.scan_texture(ignored, ignored);
     if (!in.good()) return false;
   }
   for (std::size_t f = 0; f < polygons.size(); ++f) {
@@ -80,7 +105,7 @@ bool readOff(std::istream& in, std::uintmax_t fileSize, std::vector<Point>& poin
       if (!in || index >= points.size()) return false;
       polygons[f][j] = index;
     }
-    if (scanner.has_fcolors()) {
+    if (scanner.binary() && scanner.has_fcolors()) {
       unsigned char colour = 0;
       scanner.scan_color(colour, colour, colour);
     }
@@ -110,7 +135,7 @@ TriangleSurface readMeshFile(const std::string& path, Real scale) {
     if (kind == "obj") read = CGAL::IO::read_OBJ(in, points, polygons);
     else if (kind == "off") read = readOff(in, std::filesystem::file_size(path, error), points, polygons);
     else if (kind == "ply") {
-      requirePlyElementBeforeProperty(path);
+      requireReadablePlyHeader(path, std::filesystem::file_size(path, error));
       read = CGAL::IO::read_PLY(in, points, polygons, CGAL::parameters::verbose(false));
     }
     else read = CGAL::IO::read_STL(in, points, polygons, CGAL::parameters::verbose(false));

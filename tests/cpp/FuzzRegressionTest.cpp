@@ -65,9 +65,32 @@ TEST(FuzzRegression, OffNegativeCountIsRefused) {
 
 // off_reader_fuzzer (in CI's 15 s): a binary OFF header declaring 1229865216 edges, which CGAL's header reader
 // doubles as an int (signed overflow in CGAL, suppressed by fuzz/ubsan.supp); the file must still be refused.
-TEST(FuzzRegression, OffEdgeCountOverflowIsRefused) {
-  const std::string message = refusal([] { readMeshFile(kData + "edge_count_overflow.off"); });
-  EXPECT_EQ(message.rfind(kData + "edge_count_overflow.off: ", 0), 0u) << message;
+// Likewise its halfedge estimate (vertices + facets + 10) * 2.1 converted to int (halfedge_estimate.off).
+TEST(FuzzRegression, OffHeaderCountOverflowsAreRefused) {
+  for (const std::string file : {"edge_count_overflow.off", "halfedge_estimate.off"}) {
+    const std::string message = refusal([&] { readMeshFile(kData + file); });
+    EXPECT_EQ(message.rfind(kData + file + ": ", 0), 0u) << message;
+  }
+}
+
+// off_reader_fuzzer (after our own OFF loop): a COFF file whose vertex lines hold no colour made CGAL's
+// scan_color index an empty line (applying an offset to a null pointer); text files' colours are not read now.
+TEST(FuzzRegression, OffColourMissingFromItsLineIsRefused) {
+  const std::string message = refusal([] { readMeshFile(kData + "colour_entries_missing.off"); });
+  EXPECT_EQ(message.rfind(kData + "colour_entries_missing.off: ", 0), 0u) << message;
+}
+
+// ply_reader_fuzzer: CGAL's PLY reader trusts the header. A vertex coordinate declared uint32 was cast to the
+// float it expects and the null result dereferenced; a negative element count ran its loops for 2^64
+// elements (a timeout) or sized its arrays by it (3 GB asked by a 300-byte file).
+TEST(FuzzRegression, PlyHeadersCgalWouldTrustAreRefused) {
+  for (const auto& [file, line] : {std::pair<std::string, std::string>{"integer_coordinate.ply", "5 declares the "
+                                                                       "vertex coordinate x as 'uint32'"},
+                                   {"huge_element_count.ply", "3 declares -5.000000 elements 'vertex'"},
+                                   {"slow_element_count.ply", "4 declares -1.000000 elements 'vert'"}}) {
+    const std::string message = refusal([&] { readMeshFile(kData + file); });
+    EXPECT_EQ(message.rfind(kData + file + ": PLY header line " + line, 0), 0u) << message;
+  }
 }
 
 }  // namespace
