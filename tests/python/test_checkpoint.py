@@ -181,3 +181,14 @@ def test_a_checkpointer_in_a_loop_saves_when_due(tmp_path):
     assert saved_at == [12, 24] and rm.checkpoint.verify(checkpoints.path)["iteration"] == 24
     with pytest.raises(ValueError, match="give every_steps, every_seconds or both"):
         rm.checkpoint.Checkpointer("x.yade.gz")
+
+
+def test_a_checkpointer_by_wall_clock_time_saves_from_the_engine(tmp_path):
+    rubber = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-3)
+    rm.add_body(rm.Mesh.icosphere(0.025, 1), pos=(0, 0, 0.1), material=rubber)
+    checkpoints = rm.checkpoint.Checkpointer(str(tmp_path / "c.yade.gz"), every_seconds=1e-6)
+    O.engines = [checkpoints.engine(), ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81))]
+    O.dt = 1e-5
+    O.run(5, True)
+    # Due at every step: the last save is the one at the start of the fifth step.
+    assert rm.checkpoint.verify(checkpoints.path)["iteration"] == 4
