@@ -58,10 +58,9 @@ Real distanceFromOrigin(const std::array<Vector2r, 3>& t) {
 
 namespace {
 
-std::array<Vector3r, 3> corners(const RoundedMesh& mesh, int t, const Matrix3r& rotation, const Vector3r& translation) {
+std::array<Vector3r, 3> corners(const RoundedMesh& mesh, int t) {
   const Triangle& c = mesh.triangles()[t];
-  return {rotation * mesh.vertices()[c[0]] + translation, rotation * mesh.vertices()[c[1]] + translation,
-          rotation * mesh.vertices()[c[2]] + translation};
+  return {mesh.vertices()[c[0]], mesh.vertices()[c[1]], mesh.vertices()[c[2]]};
 }
 
 // Filters 2-4 for triangles p and q (q placed in mesh 1's frame). With `full`, also filter 5.
@@ -99,8 +98,9 @@ bool canTouch(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, 
   }
   // Then the projected triangles themselves, on the plane now.
   const Vector3r u = n.unitOrthogonal(), v = n.cross(u);
-  const std::array<Vector3r, 3> xp = corners(mesh1, s, Matrix3r::Identity(), Vector3r::Zero());
-  const std::array<Vector3r, 3> xq = corners(mesh2, t, rotation, translation);
+  const std::array<Vector3r, 3> xp = corners(mesh1, s);
+  std::array<Vector3r, 3> xq = corners(mesh2, t);
+  for (Vector3r& x : xq) x = rotation * x + translation;
   Real far = 0;
   for (int i = 0; i < 3; ++i) far = std::max({far, (xp[i] - c).norm(), (xq[i] - c).norm()});
   const Real slack = shift + far * tilt + skin;

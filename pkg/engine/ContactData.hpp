@@ -94,6 +94,7 @@ struct ContactData {
   std::vector<AlignedBox3r> neighbourBoxes;
   std::vector<CandidateList> candidateLists;
 
+  std::vector<AlignedBox3r> boxes;                // scratch: the world boxes of this step
   std::vector<BodyPair> pairs;                    // pairs whose bounds overlap this step
   std::vector<PairResult> pairResults;            // one per pair
   std::vector<std::vector<PressureGeom>> geoms;   // scratch: one per thread

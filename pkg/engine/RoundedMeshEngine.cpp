@@ -82,8 +82,8 @@ Real motionBound(const Quaternionr& fromRotation, const Vector3r& fromTranslatio
 // depth needed (a pair that has come apart). The new skin follows the pair's motion per step (ListSkins); the
 // near list it is taken from is searched again only when it no longer covers the new one.
 void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Quaternionr& rotation,
-                      const Vector3r& translation, const ListSkins& skins, Real radius, Real shallow,
-                      CandidateList& list, ContactStatistics& statistics) {
+                      const Matrix3r& matrix, const Vector3r& translation, const ListSkins& skins, Real radius,
+                      Real shallow, CandidateList& list, ContactStatistics& statistics) {
   const Real bound = mesh2.sphereBoundRadius();
   Real skin = skins.candidatesMin * radius, depth = shallow;
   if (list.built) {
@@ -94,7 +94,6 @@ void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const 
     skin = std::clamp(skins.candidateSteps * motion / list.age, skin, skins.candidatesMax * radius);
     depth = 1.5 * list.deepest + 2 * skin;
   }
-  const Matrix3r matrix = rotation.toRotationMatrix();
   const bool nearCovers = list.nearSkin > 0 && depth <= list.nearDepth &&
                           motionBound(list.nearRotation, list.nearTranslation, rotation, translation, bound) + skin <=
                               list.nearSkin;
@@ -131,6 +130,7 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
     const RoundedBody& other = model.bodies[pair.other];
     const Real smaller = std::min(body.equivalentRadius, other.equivalentRadius);
     const Quaternionr rotation = s1.orientation.conjugate() * s2.orientation;
+    const Matrix3r matrix = rotation.toRotationMatrix();
     const Vector3r translation = local(s2.position);
     CandidateList fresh;
     CandidateList& list = candidates ? *candidates : fresh;
@@ -138,11 +138,12 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
     // A contact deeper than its list holds may have neighbours deeper still that the list missed: the list grows
     // with it and the pair is evaluated again (a few passes take a fresh list of a deep overlap to its depth).
     for (int pass = 0;; ++pass) {
-      updateCandidates(*body.mesh, *other.mesh, rotation, translation, model.skins, smaller, shallow, list, statistics);
+      updateCandidates(*body.mesh, *other.mesh, rotation, matrix, translation, model.skins, smaller, shallow, list,
+                       statistics);
       NarrowPhaseCounts counts;
       geoms.clear();
-      Ig2_RoundedMesh_RoundedMesh_PressureGeom(*body.mesh, *other.mesh, rotation.toRotationMatrix(), translation,
-                                               list.pairs, shallow, motion, GeomOutput(geoms, &counts));
+      Ig2_RoundedMesh_RoundedMesh_PressureGeom(*body.mesh, *other.mesh, matrix, translation, list.pairs, shallow,
+                                               motion, GeomOutput(geoms, &counts));
       list.deepest = 0;
       for (const PressureGeom& geom : geoms) list.deepest = std::max(list.deepest, geom.effectiveOverlap);
       if (list.deepest <= list.depth - list.skin || pass == kDeepeningPasses) {
@@ -230,7 +231,8 @@ void rebuildNeighbours(const ContactModel& model, ContactData& data, const std::
 void broadPhase(const ContactModel& model, ContactData& data) {
   const int bodyCount = static_cast<int>(model.bodies.size());
   const int count = bodyCount + static_cast<int>(model.partners.size());
-  std::vector<AlignedBox3r> boxes(count);
+  std::vector<AlignedBox3r>& boxes = data.boxes;
+  boxes.resize(count);
   Real smallest = kInfinity;
   for (int b = 0; b < bodyCount; ++b) {
     boxes[b] = ball(data.bodyStates[b].position, model.bodies[b].mesh->sphereBoundRadius());
