@@ -1,16 +1,30 @@
 """Scene S1 of doc/scenes.md, the shaken gravitational packing of Smeets et al., CMAME 277 (2014) 219-238,
-Section 3.4 (Figs. 10-12), run whole with rounded bodies: `--count` bodies of one shape fall from S1's lattice
-into a 0.40 m x 0.40 m box of five YADE Walls, the box moves vertically as z_box(t) = A sin(2 pi t / T)
-(A = 0.025 m, T = 0.25 s) for three periods (0.75 s), then stands still; 1.35 s in all, 13,500 steps of 1e-4 s.
+doi:10.1016/j.cma.2014.04.017, Section 3.4 (Figs. 10-11), run whole: `--count` bodies of equal volume fall from
+S1's lattice into a 0.40 m x 0.40 m box of five YADE Walls, the box moves vertically as
+z_box(t) = A sin(2 pi t / T) (A = 0.025 m, T = 0.25 s) for three periods (0.75 s), then stands still; 1.35 s in
+all, 13,500 steps of 1e-4 s.
 
-    /usr/bin/python3 scripts/s1_packing.py [--shape gummy_bear] [--count 250] [--seed 1] [--dt 1e-4]
-        [--duration 1.35] [--sample 100] [--frames 1] [--threads 1] [--output out/s1/<shape>]
+    /usr/bin/python3 scripts/s1_packing.py [--shape gummy_bear|...|all] [--peers clumps level_sets]
+        [--peers-only] [--count 250] [--seed 1] [--dt 1e-4] [--duration 1.35] [--sample 100] [--frames 14]
+        [--threads 1] [--checkpoint-every 1000] [--resume] [--plot-only] [--output out/s1]
 
-Shapes: gummy_bear and pear (Mesh.reference_shape, ~554 and ~486 nodes asked), icosphere12, icosphere42 and
-icosphere162 (Mesh.icosphere with 0, 1, 2 subdivisions, its radius chosen so that the mesh's volume is that of
-the sphere of radius 0.025 m). Every body has the volume of that sphere. Materials (S1): particles E = 1e6 Pa,
-nu = 0.4, 2000 kg/m^3; box E = 5e6 Pa, nu = 0.4; normal damping constant A = 0.01 s (Eq. 7) on both; no
-friction. NewtonIntegrator without numerical damping, gravity (0, 0, -9.81) m/s^2.
+Runs, each in its own process and folder <output>/<run>:
+    sphere        perfect spheres (rm.add_sphere): roundedmesh's analytic sphere, Hertz with Eq. 7 damping, the
+                  law a meshed sphere converges to, computed by the same engine (doc/physics.md)
+    icosphere12, icosphere42, icosphere162
+                  Mesh.icosphere with 0, 1, 2 subdivisions, scaled so that the mesh's volume is the sphere's
+    pear, gummy_bear
+                  Mesh.reference_shape (~486 and ~554 nodes asked)
+    gummy_bear_clumps, gummy_bear_level_sets (--peers clumps level_sets)
+                  YADE's own representations of the gummy bear on the same scene (roundedmesh.peers): 40-sphere
+                  clumps of the shape's primitives and level-set bodies of its distance field (1 mm grid, 511
+                  surface nodes), with YADE's Hertz-Mindlin law, its damping ratio matched to Eq. 7 at the
+                  overlap under one bear's weight (the mapping: roundedmesh.peers and doc/s1-packing.md)
+Every body has the volume of the sphere of radius 0.025 m. Materials (S1): particles E = 1e6 Pa, nu = 0.4,
+2000 kg/m^3; box E = 5e6 Pa, nu = 0.4; normal damping constant A = 0.01 s (Eq. 7) on both; no friction.
+NewtonIntegrator without numerical damping, gravity (0, 0, -9.81) m/s^2. The lattice: layers of 4 x 4 nodes at
+x, y in {-0.15, -0.05, 0.05, 0.15} m, 0.10 m apart from z = 0.06 m, each node jittered uniformly by +-3 mm and
+each body turned by a uniformly random rotation (seeded); every representation starts from the same poses.
 
 The box is moved by YADE's HarmonicMotionEngine on all five walls, which sets each wall's velocity at the start
 of every step to v = -A' w sin(w t + phi) (w = 2 pi / T). With A' = A and phi = -pi/2 it would use the velocity
@@ -20,72 +34,116 @@ t + dt is exactly (z_box(t + dt) - z_box(t)) / dt (a sum of cosines), so the box
 step to rounding. After 0.75 s the engine is stopped and the walls' velocities set to zero (a stopped
 HarmonicMotionEngine leaves the last velocity in place, and the box would keep moving).
 
-Heights are those of the bodies' centres of mass above z = 0, the floor's rest position [m]. Outputs, in
---output:
+Heights are those of the bodies' centres of mass above z = 0, the floor's rest position [m] (for a clump, the
+centre of its spheres' union, within 0.3 mm of the bear's). Outputs of a run, in <output>/<run>:
     height.csv    one row per window of --sample steps (also ending at the end of shaking and of the run), at
-                  the window's end: step, time [s], phase of the window, box position [m], mean and max height
-                  [m], mean speed [m/s], bodies in the scene and bodies whose centre left the box, the last
-                  step's counts of rm.statistics() (body_pairs, touching_pairs, candidates, contacts =
-                  quadrature_contacts + direct_contacts, candidate_rebuilds, near_rebuilds) and its stage times
-                  (pairs_ms, read_ms, write_ms [ms]), and the window's steps, wall time and CPU time per step
-                  [ms] (CPU of all the process's threads: on a shared machine, how much of the wall time it got)
+                  the window's end: step, time [s], phase, box position [m], mean and max height [m], mean
+                  speed [m/s], bodies in the scene and bodies whose centre left the box, the contact counts of
+                  the last step (roundedmesh: rm.statistics()'s body_pairs, touching_pairs, candidates, contacts =
+                  triangle or sphere contacts; YADE peers: touching body pairs and real interactions, the rest
+                  empty), roundedmesh's stage times (pairs_ms, read_ms, write_ms [ms]), and the window's steps,
+                  wall time and CPU time per step [ms] (CPU of all the process's threads)
     packing.csv   at the end, Eq. 28: P(h) = N_h V_p / (A_b h) * 100 [%] for h = 0.01 ... 0.30 m, N_h the bodies
                   whose centre is less than h above the floor, V_p a body's volume [m^3], A_b = 0.16 m^2
-    timing.csv    OpenMP threads, wall time of building and of running [s], CPU time of the run [s] (all
-                  threads), median wall and CPU ms/step over the windows of shaking and of settling, machine,
-                  command
-    height.png    mean and max height and the box's position vs time (the paper's Fig. 11a)
-    vtk/          ParaView series <shape>.pvd of --frames frames (roundedmesh.export.VtkSeries), evenly spaced,
-                  the last at the end of the run
-A window's time excludes sampling and frame writing. The recorder runs in a PyRunner at the start of every
+    final_state.csv  every body's id, position [m] and orientation (w, x, y, z) at the end
+    timing.csv    threads, wall time of building and of running [s], CPU time [s], median wall and CPU ms per
+                  step and median contact counts over the windows of shaking and of settling, machine, command
+    height.png    mean and max height and the box's position vs time for this run
+    vtk/          ParaView series <run>.pvd of --frames frames (roundedmesh.export.VtkSeries; YADE's spheres as
+                  part 1 for the sphere and clump runs; none for level sets, which YADE 2023.02a's VTKRecorder
+                  cannot write), evenly spaced, the last at the end of the run
+    checkpoint.yade.gz  the scene every --checkpoint-every steps (roundedmesh.checkpoint), for --resume
+And in <output>, from every run folder found there: fig11a_mean_height.png/.csv (the paper's Fig. 11a),
+fig11b_packing.png/.csv (Fig. 11b), fig10_packings.png (Fig. 10: a picture of each final packing) and
+summary.csv (one row per run). --plot-only remakes them without running.
+
+A window's time excludes sampling, checkpoints and frames. The recorder runs in a PyRunner at the start of every
 step (about 0.015 ms per step), inside one O.run, so that no window includes the up to 40 ms by which
-O.run(n, True) notices the end of a run.
+O.run(n, True) notices the end of a run. --resume continues each run from its checkpoint (a run whose timing.csv
+exists is complete and skipped); height.csv keeps the rows up to the checkpoint, the run's timing the resumed
+part. --threads sets OMP_NUM_THREADS for the roundedmesh engine in each run's process (YADE's own engines run
+on one thread).
 
-The touching pairs of the first step, before anything has moved, are printed: S1's lattice does not keep every
-body off the side walls (the outer nodes are 0.05 m +- 0.003 m from them, and the gummy bear reaches 0.0485 m
-from its centre), so a few bodies may start pressed against a wall.
-
---threads sets OMP_NUM_THREADS for the roundedmesh engine: the script restarts itself with it set before YADE
-loads OpenMP. Bad input (an unknown shape, a time step above rm.critical_timestep() or one that does not divide
-the shaking into whole steps, an output folder that cannot be written) stops the script with a message before
-it runs a step.
+Bad input stops the script before any run starts: an unknown shape or peer, a time step above the stability
+limit of any run asked for (rm.critical_timestep(); YADE's utils.PWaveTimeStep() for the peers) or one that
+does not divide the shaking into whole steps, an output folder that cannot be written, and with --resume a
+checkpoint that is damaged or from another scene (another shape, count, seed, time step or duration).
 """
 import argparse
+import csv
+import json
 import math
 import os
 import shlex
+import statistics
+import subprocess
 import sys
 import tempfile
 import time
 
-SHAPES = ("gummy_bear", "pear", "icosphere12", "icosphere42", "icosphere162")
+import numpy as np
+
+SHAPES = ("sphere", "icosphere12", "icosphere42", "icosphere162", "pear", "gummy_bear")
+PEERS = ("clumps", "level_sets")
+PEER_SHAPE = "gummy_bear"
 ICOSPHERE_SUBDIVISIONS = {"icosphere12": 0, "icosphere42": 1, "icosphere162": 2}
 SHAKING = 0.75  # three periods of T = 0.25 s [s]
+RADIUS = 0.025                        # volume-equivalent radius r [m]
+VOLUME = 4 / 3 * math.pi * RADIUS ** 3  # every body's volume V_p [m^3]
+HALF_BASE = 0.20                      # the box's inner base is 0.40 m x 0.40 m, centred on the z axis [m]
+LATTICE = (-0.15, -0.05, 0.05, 0.15)  # x and y of a layer's 4 x 4 nodes [m]
+LAYER_SPACING, LOWEST_LAYER, JITTER = 0.10, 0.06, 0.003  # [m]
+AMPLITUDE, PERIOD = 0.025, 0.25       # the box's shaking [m], [s]
+GRAVITY = 9.81                        # [m/s^2]
+PACKING_HEIGHTS = np.round(np.arange(1, 31) * 0.01, 2)  # h of Eq. 28 [m]
+SUBMERGED_HEIGHT = 0.10               # h at which the summary quotes P(h): below every packing's top [m]
+FIELDS = ["step", "time_s", "phase", "box_z_m", "mean_height_m", "max_height_m", "mean_speed_m_s", "bodies",
+          "outside", "body_pairs", "touching_pairs", "candidates", "contacts", "candidate_rebuilds",
+          "near_rebuilds", "pairs_ms", "read_ms", "write_ms", "window_steps", "ms_per_step", "cpu_ms_per_step"]
+CHECKPOINT = "checkpoint.yade.gz"
+SCENE_TAG = "s1_packing.scene"  # O.tags key of the scene's parameters, to refuse a checkpoint of another scene
+
+
+def run_names(shape, peers, peers_only):
+    shapes = [] if peers_only else (list(SHAPES) if shape == "all" else [shape])
+    return shapes + [f"{PEER_SHAPE}_{peer}" for peer in peers]
 
 
 def parse(argv):
-    parser = argparse.ArgumentParser(
-        description=__doc__.split("\n\n")[0],
-        epilog="Perfect spheres, S1's first shape, are left out for now: how a YADE Sphere takes part in the "
-               "same contact law is still being decided.")
-    parser.add_argument("--shape", default="gummy_bear", help=f"one of {', '.join(SHAPES)} (default gummy_bear)")
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--shape", default="gummy_bear", help=f"one of {', '.join(SHAPES)}, or all (default gummy_bear)")
+    parser.add_argument("--peers", nargs="*", default=[], metavar="PEER",
+                        help=f"YADE's own representations of the gummy bear to run too: {', '.join(PEERS)}")
+    parser.add_argument("--peers-only", action="store_true", help="run the peers only, not --shape")
     parser.add_argument("--count", type=int, default=250, help="bodies (default 250)")
     parser.add_argument("--seed", type=int, default=1, help="seed of the jitter and the orientations (default 1)")
     parser.add_argument("--dt", type=float, default=1e-4, help="time step [s] (default 1e-4)")
     parser.add_argument("--duration", type=float, default=1.35, help="simulated time [s] (default 1.35)")
     parser.add_argument("--sample", type=int, default=100, help="steps per window of height.csv (default 100)")
-    parser.add_argument("--frames", type=int, default=1, help="ParaView frames over the run (default 1: the end)")
-    parser.add_argument("--threads", type=int, default=1, help="OpenMP threads (default 1)")
-    parser.add_argument("--output", help="output folder (default out/s1/<shape>)")
+    parser.add_argument("--frames", type=int, default=14, help="ParaView frames over a run (default 14)")
+    parser.add_argument("--threads", type=int, default=1, help="OpenMP threads of the roundedmesh engine (default 1)")
+    parser.add_argument("--checkpoint-every", type=int, default=1000,
+                        help="steps between checkpoints, a multiple of --sample (default 1000)")
+    parser.add_argument("--resume", action="store_true", help="continue each run from its checkpoint")
+    parser.add_argument("--plot-only", action="store_true", help="only remake the figures of --output")
+    parser.add_argument("--output", default=os.path.join("out", "s1"), help="output folder (default out/s1)")
+    parser.add_argument("--run", help=argparse.SUPPRESS)    # one run, in this process (how the script calls itself)
+    parser.add_argument("--check", action="store_true", help=argparse.SUPPRESS)  # with --run: checks only
     args = parser.parse_args(argv)
-    if args.shape == "sphere":
-        parser.error("--shape sphere: perfect spheres are left out for now (see --help); use one of "
-                     + ", ".join(SHAPES))
-    if args.shape not in SHAPES:
-        parser.error(f"--shape {args.shape}: unknown shape; use one of {', '.join(SHAPES)}")
-    for name in ("count", "sample", "frames", "threads"):
+    if args.shape != "all" and args.shape not in SHAPES:
+        parser.error(f"--shape {args.shape}: unknown shape; use one of {', '.join(SHAPES)} or all")
+    for peer in args.peers:
+        if peer not in PEERS:
+            parser.error(f"--peers {peer}: unknown peer; use {' and/or '.join(PEERS)}")
+    if args.peers_only and not args.peers:
+        parser.error("--peers-only needs --peers")
+    for name in ("count", "sample", "frames", "threads", "checkpoint_every"):
         if getattr(args, name) < 1:
-            parser.error(f"--{name} must be at least 1")
+            parser.error(f"--{name.replace('_', '-')} must be at least 1")
+    if args.checkpoint_every % args.sample:
+        parser.error(f"--checkpoint-every {args.checkpoint_every}: must be a multiple of --sample {args.sample}, so "
+                     "that a resumed run's windows are those of an uninterrupted one")
     if not (args.dt > 0 and math.isfinite(args.dt)):
         parser.error("--dt must be a positive number of seconds")
     if not (args.duration >= args.dt and math.isfinite(args.duration)):
@@ -98,79 +156,156 @@ def parse(argv):
     args.shaking_steps = min(round(shaking_steps), args.steps)
     if args.frames > args.steps:
         parser.error(f"--frames {args.frames}: more frames than the run's {args.steps} steps")
-    args.output = args.output or os.path.join("out", "s1", args.shape)
-    try:
-        os.makedirs(args.output, exist_ok=True)
-        with tempfile.TemporaryFile(dir=args.output):
-            pass
-    except OSError as error:
-        parser.error(f"--output {args.output}: cannot write there ({error.strerror or error})")
+    args.runs = [args.run] if args.run else run_names(args.shape, args.peers, args.peers_only)
+    for folder in [args.output] + ([] if args.plot_only else [os.path.join(args.output, r) for r in args.runs]):
+        try:
+            os.makedirs(folder, exist_ok=True)
+            with tempfile.TemporaryFile(dir=folder):
+                pass
+        except OSError as error:
+            parser.error(f"--output {args.output}: cannot write to {folder} ({error.strerror or error})")
     return args
 
 
-ARGS = parse(sys.argv[1:])
-if os.environ.get("OMP_NUM_THREADS") != str(ARGS.threads):  # before YADE loads OpenMP
-    os.environ["OMP_NUM_THREADS"] = str(ARGS.threads)
-    os.execv(sys.executable, [sys.executable] + sys.argv)
+def scene_parameters(args, run):
+    """What makes two runs the same scene: a checkpoint of other parameters is refused."""
+    return {"run": run, "count": args.count, "seed": args.seed, "dt": args.dt, "duration": args.duration}
 
-import csv  # noqa: E402
+
+def child_command(args, run, check):
+    command = [sys.executable, os.path.abspath(__file__), "--run", run, "--count", str(args.count),
+               "--seed", str(args.seed), "--dt", repr(args.dt), "--duration", repr(args.duration),
+               "--sample", str(args.sample), "--frames", str(args.frames), "--threads", str(args.threads),
+               "--checkpoint-every", str(args.checkpoint_every), "--output", args.output]
+    return command + (["--resume"] if args.resume else []) + (["--check"] if check else [])
+
+
+def main_process(args):
+    """Checks every run asked for, then runs them one after the other, each in a process with its own
+    OMP_NUM_THREADS, then makes the figures of every run in --output."""
+    if not args.plot_only:
+        environment = dict(os.environ, OMP_NUM_THREADS=str(args.threads),
+                           S1_PACKING_COMMAND=shlex.join([sys.executable] + sys.argv))
+        # All checks first, so that bad input stops the script before any run starts (a single run checks
+        # itself before its first step).
+        for run in args.runs if len(args.runs) > 1 else []:
+            check = subprocess.run(child_command(args, run, check=True), env=environment, capture_output=True, text=True)
+            if check.returncode:
+                lines = (check.stderr.strip() or check.stdout.strip()).splitlines()
+                raise SystemExit(f"s1_packing.py: {run}: {lines[-1] if lines else 'check failed'}")
+        for run in args.runs:
+            if subprocess.run(child_command(args, run, check=False), env=environment).returncode:
+                raise SystemExit(f"s1_packing.py: the run {run} failed (its output so far is in "
+                                 f"{os.path.join(args.output, run)})")
+    import s1_figures  # noqa: E402  (matplotlib and YADE only now, after the runs)
+    s1_figures.make_all(args.output, RADIUS, SUBMERGED_HEIGHT)
+
+
+if __name__ == "__main__":
+    ARGS = parse(sys.argv[1:])
+    if not ARGS.run:
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        main_process(ARGS)
+        raise SystemExit(0)
+
+# --- one run, in this process -------------------------------------------------------------------------------
+
 import ctypes  # noqa: E402
-import statistics  # noqa: E402
+import xml.etree.ElementTree as ElementTree  # noqa: E402
 
-import numpy as np  # noqa: E402
-from yade import ForceResetter, HarmonicMotionEngine, NewtonIntegrator, O, PyRunner, utils  # noqa: E402
+from yade import ForceResetter, HarmonicMotionEngine, NewtonIntegrator, O, PyRunner, Wall, utils  # noqa: E402
 from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
+from roundedmesh import peers  # noqa: E402
 from roundedmesh.benchmarking import machine  # noqa: E402
 from roundedmesh.export import VtkSeries  # noqa: E402
 from roundedmesh.progress import Progress  # noqa: E402
 
-# Scene S1 (doc/scenes.md)
-RADIUS = 0.025                       # volume-equivalent radius r [m]
-HALF_BASE = 0.20                     # the box's inner base is 0.40 m x 0.40 m, centred on the z axis [m]
-LATTICE = (-0.15, -0.05, 0.05, 0.15)  # x and y of a layer's 4 x 4 nodes [m]
-LAYER_SPACING, LOWEST_LAYER, JITTER = 0.10, 0.06, 0.003  # [m]
-AMPLITUDE, PERIOD = 0.025, 0.25      # the box's shaking [m], [s]
-GRAVITY = 9.81                       # [m/s^2]
-PARTICLE = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=0.01)
-BOX = rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=0.01)  # density unused: walls are kinematic
-PACKING_HEIGHTS = np.round(np.arange(1, 31) * 0.01, 2)  # h of Eq. 28 [m]
-FIELDS = ["step", "time_s", "phase", "box_z_m", "mean_height_m", "max_height_m", "mean_speed_m_s", "bodies",
-          "outside", "body_pairs", "touching_pairs", "candidates", "contacts", "candidate_rebuilds",
-          "near_rebuilds", "pairs_ms", "read_ms", "write_ms", "window_steps", "ms_per_step", "cpu_ms_per_step"]
+PARTICLE = rm.HertzMaterial(young=peers.PARTICLE["young"], poisson=peers.PARTICLE["poisson"],
+                            density=peers.PARTICLE["density"], damping=peers.DAMPING_CONSTANT)
+BOX = rm.HertzMaterial(young=peers.BOX["young"], poisson=peers.BOX["poisson"], density=peers.BOX["density"],
+                       damping=peers.DAMPING_CONSTANT)  # density unused: the walls are kinematic
+
+
+def lattice_poses(count, seed):
+    """S1's start: [(position [m], (w, x, y, z), velocity, angular velocity)], bottom layer first, x fastest."""
+    rng = np.random.default_rng(seed)
+    poses = []
+    for i in range(count):
+        layer, node = divmod(i, 16)
+        row, column = divmod(node, 4)
+        position = np.array([LATTICE[column], LATTICE[row], LOWEST_LAYER + LAYER_SPACING * layer])
+        position += rng.uniform(-JITTER, JITTER, 3)
+        quaternion = rng.normal(size=4)  # a normalised 4D Gaussian is a uniformly random rotation
+        poses.append((tuple(position), tuple(quaternion / np.linalg.norm(quaternion)), (0, 0, 0), (0, 0, 0)))
+    return poses
 
 
 def make_mesh(shape):
     if shape in ICOSPHERE_SUBDIVISIONS:
         k = ICOSPHERE_SUBDIVISIONS[shape]
         # an inscribed polyhedron has less volume than its sphere; volume scales as radius cubed
-        scale = (4 / 3 * math.pi * RADIUS ** 3 / rm.Mesh.icosphere(RADIUS, k).volume) ** (1 / 3)
+        scale = (VOLUME / rm.Mesh.icosphere(RADIUS, k).volume) ** (1 / 3)
         return rm.Mesh.icosphere(RADIUS * scale, k)
     return rm.Mesh.reference_shape(shape)
 
 
-def build(args):
-    """Resets YADE and builds S1: the bodies on the lattice, the box, the engines. Returns (body ids, wall ids,
-    the box's HarmonicMotionEngine, mesh)."""
+def box_walls():
+    return [utils.wall(0, axis=2, sense=1),
+            utils.wall(-HALF_BASE, axis=0, sense=1), utils.wall(HALF_BASE, axis=0, sense=-1),
+            utils.wall(-HALF_BASE, axis=1, sense=1), utils.wall(HALF_BASE, axis=1, sense=-1)]
+
+
+def build_roundedmesh(run, poses):
+    """The bodies of `run` at `poses`, the box as roundedmesh partners and the engines. Returns (body ids, wall
+    ids, description)."""
     O.reset()
-    mesh = make_mesh(args.shape)
-    rng = np.random.default_rng(args.seed)
     bodies = []
-    for i in range(args.count):
-        layer, node = divmod(i, 16)
-        row, column = divmod(node, 4)  # bottom layer first, x fastest
-        pos = np.array([LATTICE[column], LATTICE[row], LOWEST_LAYER + LAYER_SPACING * layer])
-        pos += rng.uniform(-JITTER, JITTER, 3)
-        ori = Quaternion(*rng.normal(size=4))  # a normalised 4D Gaussian is a uniformly random rotation
-        ori.normalize()
-        bodies.append(rm.add_body(mesh, tuple(pos), ori, PARTICLE))
-    walls = [O.bodies.append(wall) for wall in
-             (utils.wall(0, axis=2, sense=1),
-              utils.wall(-HALF_BASE, axis=0, sense=1), utils.wall(HALF_BASE, axis=0, sense=-1),
-              utils.wall(-HALF_BASE, axis=1, sense=1), utils.wall(HALF_BASE, axis=1, sense=-1))]
+    for position, (w, x, y, z), _, _ in poses:
+        ori = Quaternion(w, x, y, z)
+        if run == "sphere":
+            bodies.append(rm.add_sphere(position, RADIUS, PARTICLE, ori=ori))
+        else:
+            mesh = make_mesh(run)
+            bodies.append(rm.add_body(mesh, position, ori, PARTICLE))
+    walls = [O.bodies.append(wall) for wall in box_walls()]
     for wall in walls:
         rm.assign_material(wall, BOX)
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -GRAVITY), damping=0)]
+    if run == "sphere":
+        return bodies, walls, f"analytic spheres of radius {RADIUS} m"
+    mesh = make_mesh(run)
+    return bodies, walls, (f"{len(mesh.vertices)} nodes, {len(mesh.triangles)} triangles, volume "
+                           f"{mesh.volume:.6g} m^3")
+
+
+def build_peer(run, poses):
+    """YADE's own representation `run` at `poses` (roundedmesh.peers; the walls are bodies 0-4)."""
+    if run.endswith("_clumps"):
+        bodies = peers.build_clumps(poses, count=40, name=PEER_SHAPE)
+        description = "40-sphere clumps, YADE's Hertz-Mindlin"
+    else:
+        bodies = peers.build_level_sets(poses, name=PEER_SHAPE)
+        description = "level-set bodies (1 mm grid, 511 surface nodes), YADE's Hertz-Mindlin"
+    return bodies, list(range(5)), description
+
+
+def stability_limit(run):
+    """(limit [s], how it was found). YADE's utils.PWaveTimeStep() knows only spheres: for level-set bodies, the
+    same estimate r sqrt(rho / E) for the volume-equivalent sphere."""
+    if run in SHAPES:
+        return rm.critical_timestep(), "rm.critical_timestep()"
+    if run.endswith("_clumps"):
+        return utils.PWaveTimeStep(), "utils.PWaveTimeStep()"
+    return RADIUS * math.sqrt(peers.PARTICLE["density"] / peers.PARTICLE["young"]), "r sqrt(rho / E)"
+
+
+def build(args, run):
+    """Resets YADE and builds S1 for `run`: the bodies on the lattice, the box and its motion, the recorder.
+    Returns (body ids, wall ids, the box's HarmonicMotionEngine, description)."""
+    poses = lattice_poses(args.count, args.seed)
+    bodies, walls, description = (build_roundedmesh if run in SHAPES else build_peer)(run, poses)
     omega = 2 * math.pi / PERIOD
     x = omega * args.dt / 2  # see the module docstring: the step's mean velocity, not its first
     box = HarmonicMotionEngine(A=(0, 0, AMPLITUDE * math.sin(x) / x), f=(0, 0, 1 / PERIOD),
@@ -178,32 +313,37 @@ def build(args):
     # The recorder runs first in every step, while O.iter and O.time still describe the state the previous steps
     # left; the clock also runs last in the final step alone (iterLast starts at 0), so that the last window
     # ends there and not when O.run notices the end of the run.
-    O.engines = [PyRunner(command="s1_record()", iterPeriod=1), ForceResetter(), box, rm.engine(),
-                 NewtonIntegrator(gravity=(0, 0, -GRAVITY), damping=0),
-                 PyRunner(command="s1_last_step_ends()", iterPeriod=max(args.steps - 1, 1), initRun=args.steps == 1)]
-    return bodies, walls, box, mesh
+    engines = list(O.engines)
+    O.engines = ([PyRunner(command="s1_record()", iterPeriod=1), engines[0], box] + engines[1:] +
+                 [PyRunner(command="s1_last_step_ends()", iterPeriod=max(args.steps - 1, 1), initRun=args.steps == 1)])
+    O.tags[SCENE_TAG] = json.dumps(scene_parameters(args, run), sort_keys=True)
+    return bodies, walls, box, description
 
 
 class Recorder:
     """Called at the start of every step and once after the run, with the state that `O.iter` steps left: stops
-    the box, samples the windows into height.csv and writes the frames."""
+    the box, samples the windows into height.csv, writes the frames and the checkpoints."""
 
-    def __init__(self, args, bodies, walls, box, series):
-        self.args, self.bodies, self.walls, self.box, self.series = args, bodies, walls, box, series
+    def __init__(self, args, run, bodies, walls, box, series, resumed_at=0):
+        self.args, self.run, self.bodies, self.walls, self.box, self.series = args, run, bodies, walls, box, series
         ends = set(range(args.sample, args.steps + 1, args.sample)) | {args.steps}
         if args.shaking_steps < args.steps:
             ends.add(args.shaking_steps)
         self.window_ends = ends
         self.frame_steps = {round(k * args.steps / args.frames) for k in range(1, args.frames + 1)}
-        self.rows = []
-        self.window_start_step, self.window_start_clock = 0, None
-        self.excluded = np.zeros(2)  # wall and CPU seconds of the current window spent writing frames
+        self.checkpoint = rm.checkpoint.Checkpointer(os.path.join(args.output, run, CHECKPOINT), every_steps=1)
+        self.resumed_at = resumed_at
+        self.window_start_step, self.window_start_clock = resumed_at, None
+        self.excluded = np.zeros(2)  # wall and CPU seconds of the current window spent on frames and checkpoints
         self.last_step_end = None
         self.failure = None
-        self.reporter = Progress(args.steps, f"S1 {args.shape}", interval=10.0)
-        self.file = open(os.path.join(args.output, "height.csv"), "w", newline="")
+        self.reporter = Progress(args.steps - resumed_at, f"S1 {run}", interval=10.0)
+        path = os.path.join(args.output, run, "height.csv")
+        kept = [row for row in _csv_rows(path) if int(row[0]) <= resumed_at] if resumed_at else []
+        self.rows = [_typed(row) for row in kept]
+        self.file = open(path, "w", newline="")
         self.writer = csv.writer(self.file)
-        self.writer.writerow(FIELDS)
+        self.writer.writerows([FIELDS] + kept)
 
     def start(self):
         self.window_start_clock = clocks()
@@ -213,10 +353,12 @@ class Recorder:
 
     def record(self, clock=None):
         done = O.iter
+        if done == self.resumed_at and done > 0:  # the checkpoint's own step: sampled before it was saved
+            return
         if clock is None and done in self.window_ends:
             clock = clocks()
         if done == 1:  # the bodies have not moved yet: a contact now is an overlap in the start
-            touching = rm.statistics()["touching_pairs"]
+            touching = self.counts()[1]
             print(f"touching pairs in the first step: {touching}"
                   + ("" if touching == 0 else " (bodies overlapping each other or a wall at the start)"), flush=True)
         if done == self.args.shaking_steps and done < self.args.steps:
@@ -225,31 +367,48 @@ class Recorder:
                 O.bodies[wall].state.vel = Vector3.Zero
         if done in self.window_ends:
             self.sample(done, clock)
+        begin = clocks()
         if done in self.frame_steps:
-            begin = clocks()
             self.series.write()
-            self.excluded += clocks() - begin
-        if done in self.window_ends:  # the next window starts after this step's sampling and frame
+        if done % self.args.checkpoint_every == 0 and done < self.args.steps and self.failure is None:
+            self.checkpoint()
+        self.excluded += clocks() - begin
+        if done in self.window_ends:  # the next window starts after this step's sampling, frame and checkpoint
             self.window_start_step, self.window_start_clock, self.excluded = done, clocks(), np.zeros(2)
+
+    def counts(self):
+        """(body_pairs, touching_pairs, candidates, contacts, candidate_rebuilds, near_rebuilds, pairs_ms, read_ms,
+        write_ms) of the last step."""
+        if self.run in SHAPES:
+            s = rm.statistics()
+            return (s["body_pairs"], s["touching_pairs"], s["candidates"], s["quadrature_contacts"] +
+                    s["direct_contacts"] + s.get("sphere_contacts", 0), s["candidate_rebuilds"], s["near_rebuilds"],
+                    s["pairs_ms"], s["read_ms"], s["write_ms"])
+        real = [i for i in O.interactions if i.isReal]
+        owner = {}
+        for i in real:
+            for body in (i.id1, i.id2):
+                owner.setdefault(body, O.bodies[body].clumpId if O.bodies[body].isClumpMember else body)
+        touching = {tuple(sorted((owner[i.id1], owner[i.id2]))) for i in real}
+        empty = ""
+        return (len(O.interactions), len(touching), empty, len(real), empty, empty, empty, empty, empty)
 
     def sample(self, done, clock):
         positions, speeds = kinematics(self.bodies)
-        stats = rm.statistics()
         steps = done - self.window_start_step
+        present = sum(O.bodies[i] is not None for i in self.bodies)
         row = [done, O.time, "shaking" if done <= self.args.shaking_steps else "settling", self.box_z(),
-               positions[:, 2].mean(), positions[:, 2].max(), speeds.mean(), len(rm.rounded_bodies()),
-               outside(positions, self.box_z()), stats["body_pairs"], stats["touching_pairs"], stats["candidates"],
-               stats["quadrature_contacts"] + stats["direct_contacts"], stats["candidate_rebuilds"],
-               stats["near_rebuilds"], stats["pairs_ms"], stats["read_ms"], stats["write_ms"], steps,
+               positions[:, 2].mean(), positions[:, 2].max(), speeds.mean(), present,
+               outside(positions, self.box_z()), *self.counts(), steps,
                *(clock - self.window_start_clock - self.excluded) / steps * 1e3]
         self.rows.append(row)
         self.writer.writerow(row)
         self.file.flush()  # a run stopped early leaves every window so far
-        self.reporter.update(done)
+        self.reporter.update(done - self.resumed_at)
         if len(self.rows) % 10 == 0 or done == self.args.steps:
             print(f"  t = {row[1]:.3f} s: box at {row[3] * 1e3:+.2f} mm, mean height {row[4]:.4f} m, max "
-                  f"{row[5]:.4f} m, mean speed {row[6]:.3g} m/s, {row[10]} touching pairs, {row[12]} triangle "
-                  f"contacts, {row[-2]:.2f} ms/step ({row[-1]:.2f} CPU)", flush=True)
+                  f"{row[5]:.4f} m, mean speed {row[6]:.3g} m/s, {row[10]} touching pairs, {row[12]} contacts, "
+                  f"{row[-2]:.2f} ms/step ({row[-1]:.2f} CPU)", flush=True)
         if not (np.isfinite(positions).all() and np.isfinite(speeds).all()):
             self.fail(f"non-finite positions or speeds at t = {row[1]:.4f} s")
         elif row[8] or row[7] != self.args.count:
@@ -262,6 +421,16 @@ class Recorder:
 
     def box_z(self):
         return O.bodies[self.walls[0]].state.pos[2]
+
+
+def _csv_rows(path):
+    with open(path, newline="") as f:
+        return list(csv.reader(f))[1:]
+
+
+def _typed(row):
+    """A height.csv row read back: numbers as floats, the phase as text, empty cells as they were."""
+    return [value if k == 2 or value == "" else float(value) for k, value in enumerate(row)]
 
 
 def clocks():
@@ -280,24 +449,155 @@ def outside(positions, floor):
     return int(((np.abs(positions[:, :2]) > HALF_BASE).any(axis=1) | (positions[:, 2] < floor)).sum())
 
 
-def packing_factor(heights, volume, h):
+def packing_factor(heights, h):
     """Eq. 28 [%]: P(h) = N_h V_p / (A_b h) * 100, N_h the bodies with their centre below h."""
-    return (heights < h).sum() * volume / ((2 * HALF_BASE) ** 2 * h) * 100
+    return (heights < h).sum() * VOLUME / ((2 * HALF_BASE) ** 2 * h) * 100
 
 
-def plot(path, rows, args):
+def medians(rows, columns):
+    """Medians of height.csv columns over `rows` (NaN for none or for empty cells)."""
+    result = []
+    for column in columns:
+        values = [r[FIELDS.index(column)] for r in rows if r[FIELDS.index(column)] != ""]
+        result.append(statistics.median(values) if values else math.nan)
+    return result
+
+
+def frames_until(collection, until):
+    """The frames [(time [s], [file of each part])] of a ParaView collection written up to time `until`."""
+    frames = {}
+    if os.path.exists(collection):
+        for dataset in ElementTree.parse(collection).getroot().iter("DataSet"):
+            frames.setdefault(float(dataset.get("timestep")), []).append(dataset.get("file"))
+    return [(t, files) for t, files in sorted(frames.items()) if t <= until * (1 + 1e-12)]
+
+
+def load_checkpoint(args, run):
+    """Loads the run's checkpoint after checking that it is intact and of this scene; returns its iteration."""
+    path = os.path.join(args.output, run, CHECKPOINT)
+    if not os.path.exists(path):
+        raise SystemExit(f"--resume: {path} does not exist (no checkpoint of {run} in {args.output})")
+    try:
+        rm.checkpoint.resume(path)
+    except rm.checkpoint.CheckpointError as error:
+        raise SystemExit(f"--resume: {error}")
+    saved = json.loads(O.tags[SCENE_TAG]) if SCENE_TAG in O.tags.keys() else None
+    wanted = scene_parameters(args, run)
+    if saved != wanted:
+        raise SystemExit(f"--resume: {path} is a checkpoint of another scene ({saved}); this one is {wanted}")
+    return O.iter
+
+
+def run_one(args, run):
+    command = os.environ.get("S1_PACKING_COMMAND") or shlex.join([sys.executable] + sys.argv)
+    folder = os.path.join(args.output, run)
+    complete = args.resume and os.path.exists(os.path.join(folder, "timing.csv"))
+    resuming = args.resume and not complete
+    started = time.perf_counter()
+    threads = ctypes.CDLL("libgomp.so.1").omp_get_max_threads()
+    if resuming:
+        resumed_at = load_checkpoint(args, run)
+        walls = [b.id for b in O.bodies if isinstance(b.shape, Wall)]
+        bodies = [b.id for b in O.bodies if b.id not in walls and not b.isClumpMember]
+        box = O.engines[[getattr(e, "label", "") for e in O.engines].index("box")]
+        description = "resumed"
+    else:
+        resumed_at = 0
+        bodies, walls, box, description = build(args, run)
+    limit, limit_name = stability_limit(run)
+    if args.dt > limit:
+        raise SystemExit(f"--dt {args.dt:g} s is above the stability limit {limit_name} = {limit:g} s of this "
+                         "scene; S1 uses 1e-4 s")
+    if args.check:
+        print(f"{run}: ok" + (" (complete)" if complete else f" (resumes at step {resumed_at})" if resuming else ""))
+        return
+    if complete:
+        print(f"{run}: complete in {folder} (timing.csv exists); not run again")
+        return
+    O.dt = args.dt
+    build_seconds = time.perf_counter() - started
+    print(f"machine: {machine()}\ncommand: {command}\nOpenMP threads: {threads}", flush=True)
+    print(f"S1 {run}: {args.count} bodies ({description}), seed {args.seed}; dt = {args.dt:g} s ({args.dt / limit:.3f} "
+          f"of the limit {limit:.3g} s), {args.steps} steps: shaking {args.shaking_steps}, settling "
+          f"{args.steps - args.shaking_steps}" + (f"; resumed at step {resumed_at}" if resuming else "") +
+          f"; built in {build_seconds:.1f} s", flush=True)
+
+    series = VtkSeries(os.path.join(folder, "vtk"), run, spheres=run == "sphere" or run.endswith("_clumps"))
+    if resuming:
+        series.frames = frames_until(os.path.join(folder, "vtk", run + ".pvd"), O.time)
+    recorder = Recorder(args, run, bodies, walls, box, series, resumed_at)
+    sys.modules["__main__"].s1_record = recorder.record  # PyRunner commands run in __main__
+    sys.modules["__main__"].s1_last_step_ends = recorder.last_step_ends
+    start, start_cpu = time.perf_counter(), time.process_time()
+    recorder.start()
+    try:
+        O.run(args.steps - O.iter, True)
+    except RuntimeError as error:  # the roundedmesh engine stopped the run; its message names the cause
+        recorder.failure = str(error)
+    if O.iter == args.steps and recorder.failure is None:  # not stopped early: the state after the last step
+        recorder.record(recorder.last_step_end)
+    run_seconds, run_cpu = time.perf_counter() - start, time.process_time() - start_cpu
+    recorder.file.close()
+    if recorder.rows:
+        plot_run(os.path.join(folder, "height.png"), recorder.rows, args, run)
+    if recorder.failure:
+        raise SystemExit(f"S1 {run} stopped: {recorder.failure} (windows so far in {folder}/height.csv)")
+
+    positions, _ = kinematics(bodies)
+    heights = positions[:, 2] - recorder.box_z()
+    packing = [packing_factor(heights, h) for h in PACKING_HEIGHTS]
+    with open(os.path.join(folder, "packing.csv"), "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["h_m", "bodies_below", "packing_factor_percent"])
+        writer.writerows([h, int((heights < h).sum()), p] for h, p in zip(PACKING_HEIGHTS, packing))
+    with open(os.path.join(folder, "final_state.csv"), "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["id", "x_m", "y_m", "z_m", "qw", "qx", "qy", "qz"])
+        for i in bodies:
+            state = O.bodies[i].state
+            q = state.ori  # minieigen orders a quaternion's coefficients x, y, z, w
+            writer.writerow([i, *state.pos, q[3], q[0], q[1], q[2]])
+
+    timed = [r for r in recorder.rows if r[0] > resumed_at]
+    phases = {phase: [r for r in timed if r[2] == phase] for phase in ("shaking", "settling")}
+    columns = ["ms_per_step", "cpu_ms_per_step", "touching_pairs", "contacts"]
+    total_seconds = time.perf_counter() - started
+    with open(os.path.join(folder, "timing.csv"), "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["run", "threads", "omp_max_threads", "count", "dt_s", "steps", "resumed_at", "build_wall_s",
+                         "run_wall_s", "run_cpu_s", "total_wall_s"] +
+                        [f"{phase}_{name}" for phase in phases for name in ["windows"] + ["median_" + c for c in columns]] +
+                        ["machine", "command"])
+        writer.writerow([run, args.threads, threads, args.count, args.dt, args.steps, resumed_at, build_seconds,
+                         run_seconds, run_cpu, total_seconds] +
+                        [value for rows in phases.values() for value in [len(rows)] + medians(rows, columns)] +
+                        [machine(), command])
+
+    shaking, settling = (medians(phases[p], columns[:2]) for p in ("shaking", "settling"))
+    at_submerged = packing[list(PACKING_HEIGHTS).index(SUBMERGED_HEIGHT)]
+    print(f"\nS1 {run}, {args.count} bodies, {threads} thread(s): run {run_seconds:.1f} s wall, {run_cpu:.1f} s CPU "
+          f"for {args.steps - resumed_at} steps (build {build_seconds:.1f} s, total {total_seconds:.1f} s); median "
+          "ms/step, wall (CPU): shaking {:.2f} ({:.2f}), settling {:.2f} ({:.2f})".format(*shaking, *settling))
+    print(f"final: mean height {heights.mean():.4f} m, max {heights.max():.4f} m above the floor; "
+          f"P({SUBMERGED_HEIGHT:.2f} m) = {at_submerged:.1f} %")
+    print(f"wrote height.csv, packing.csv, final_state.csv, timing.csv, height.png and vtk/{run}.pvd to {folder}")
+    print(f"machine: {machine()}\ncommand: {command}")
+
+
+def plot_run(path, rows, args, run):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     t = np.array([r[1] for r in rows])
-    column = {name: np.array([r[k] for r in rows], dtype=float) for k, name in enumerate(FIELDS) if name != "phase"}
+    column = {name: np.array([r[k] for r in rows], dtype=float) for k, name in enumerate(FIELDS)
+              if name in ("mean_height_m", "max_height_m", "box_z_m")}
     figure, axes = plt.subplots(figsize=(7, 4.5))
     axes.plot(t, column["mean_height_m"] * 1e3, "k-", label="mean height")
     axes.plot(t, column["max_height_m"] * 1e3, "k:", label="max height")
     axes.plot(t, column["box_z_m"] * 1e3, "C0-", lw=0.8, label="box floor")
     axes.axvspan(0, min(SHAKING, t[-1]), color="C0", alpha=0.08, label="shaking")
     axes.set(xlabel="time [s]", ylabel="height of the centres [mm]", xlim=(0, t[-1]),
-             title=f"S1, {args.count} x {args.shape}, dt = {args.dt:g} s")
+             title=f"S1, {args.count} bodies, {run}, dt = {args.dt:g} s")
     axes.grid(alpha=0.3)
     axes.legend()
     figure.tight_layout()
@@ -305,75 +605,4 @@ def plot(path, rows, args):
     plt.close(figure)
 
 
-def medians(windows):
-    """(median wall, median CPU) ms per step over `windows` [(wall, CPU)], NaN for none."""
-    return tuple(statistics.median(column) for column in zip(*windows)) if windows else (math.nan, math.nan)
-
-
-def main(args):
-    started = time.perf_counter()
-    command = shlex.join([sys.executable] + sys.argv)
-    threads = ctypes.CDLL("libgomp.so.1").omp_get_max_threads()
-    print(f"machine: {machine()}\ncommand: {command}\nOpenMP threads: {threads}", flush=True)
-    bodies, walls, box, mesh = build(args)
-    limit = rm.critical_timestep()
-    if args.dt > limit:
-        raise SystemExit(f"--dt {args.dt:g} s is above the stability limit rm.critical_timestep() = {limit:g} s of "
-                         f"this scene; S1 uses 1e-4 s")
-    O.dt = args.dt
-    build_seconds = time.perf_counter() - started
-    print(f"S1: {args.count} x {args.shape} ({len(mesh.vertices)} nodes, {len(mesh.triangles)} triangles, volume "
-          f"{mesh.volume:.6g} m^3), seed {args.seed}; dt = {args.dt:g} s ({args.dt / limit:.3f} of the limit "
-          f"{limit:.3g} s), {args.steps} steps: shaking {args.shaking_steps}, settling "
-          f"{args.steps - args.shaking_steps}; built in {build_seconds:.1f} s", flush=True)
-
-    recorder = Recorder(args, bodies, walls, box, VtkSeries(os.path.join(args.output, "vtk"), args.shape))
-    sys.modules["__main__"].s1_record = recorder.record  # PyRunner commands run in __main__
-    sys.modules["__main__"].s1_last_step_ends = recorder.last_step_ends
-    start, start_cpu = time.perf_counter(), time.process_time()
-    recorder.start()
-    try:
-        O.run(args.steps, True)
-    except RuntimeError as error:  # the roundedmesh engine stopped the run; its message names the cause
-        recorder.failure = str(error)
-    if O.iter == args.steps:  # not stopped early: the state after the last step
-        recorder.record(recorder.last_step_end)
-    run_seconds, run_cpu = time.perf_counter() - start, time.process_time() - start_cpu
-    recorder.file.close()
-    if recorder.rows:
-        plot(os.path.join(args.output, "height.png"), recorder.rows, args)
-    if recorder.failure:
-        raise SystemExit(f"S1 stopped: {recorder.failure} (windows so far in {args.output}/height.csv)")
-
-    positions, _ = kinematics(bodies)
-    heights = positions[:, 2] - recorder.box_z()
-    packing = [packing_factor(heights, mesh.volume, h) for h in PACKING_HEIGHTS]
-    with open(os.path.join(args.output, "packing.csv"), "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(["h_m", "bodies_below", "packing_factor_percent"])
-        writer.writerows([h, int((heights < h).sum()), p] for h, p in zip(PACKING_HEIGHTS, packing))
-
-    shaking = [r[-2:] for r in recorder.rows if r[2] == "shaking"]
-    settling = [r[-2:] for r in recorder.rows if r[2] == "settling"]
-    total_seconds = time.perf_counter() - started
-    with open(os.path.join(args.output, "timing.csv"), "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(["threads", "omp_max_threads", "shape", "nodes", "count", "dt_s", "steps", "build_wall_s",
-                         "run_wall_s", "run_cpu_s", "total_wall_s", "shaking_windows", "median_ms_per_step_shaking",
-                         "median_cpu_ms_per_step_shaking", "settling_windows", "median_ms_per_step_settling",
-                         "median_cpu_ms_per_step_settling", "machine", "command"])
-        writer.writerow([args.threads, threads, args.shape, len(mesh.vertices), args.count, args.dt, args.steps,
-                         build_seconds, run_seconds, run_cpu, total_seconds, len(shaking), *medians(shaking),
-                         len(settling), *medians(settling), machine(), command])
-
-    at_10_cm = packing[list(PACKING_HEIGHTS).index(0.10)]
-    print(f"\nS1, {args.count} x {args.shape}, {threads} thread(s): run {run_seconds:.1f} s wall, {run_cpu:.1f} s CPU "
-          f"for {args.steps} steps (build {build_seconds:.1f} s, total {total_seconds:.1f} s); median ms/step, wall "
-          "(CPU): shaking {:.2f} ({:.2f}), settling {:.2f} ({:.2f})".format(*medians(shaking), *medians(settling)))
-    print(f"final: mean height {heights.mean():.4f} m, max {heights.max():.4f} m above the floor; "
-          f"P(0.10 m) = {at_10_cm:.1f} %")
-    print(f"wrote height.csv, packing.csv, timing.csv, height.png and vtk/{args.shape}.pvd to {args.output}")
-    print(f"machine: {machine()}\ncommand: {command}")
-
-
-main(ARGS)
+run_one(ARGS, ARGS.run)

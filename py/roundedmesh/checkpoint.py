@@ -17,7 +17,7 @@ beside the previous one's, renames it over path (atomic), then drops the previou
 path is a complete checkpoint that the sidecar vouches for, the new one or the previous one.
 
 resume verifies before it loads: that the file is there, that the sidecar lists its size and checksum, that a
-compressed file decompresses whole, and that it holds a roundedmesh scene. Anything else raises
+compressed file decompresses whole, and that it holds a YADE scene (with or without roundedmesh bodies). Anything else raises
 CheckpointError naming the file and what is wrong, and leaves the current scene as it was: YADE's own O.load is
 never given a file that failed these checks (on a truncated file it may throw or leave a partial scene,
 doc/reliability.md).
@@ -34,7 +34,9 @@ from yade import O, PyRunner
 
 _FORMAT = 1
 _COMMAND = "__import__('roundedmesh').checkpoint._engine_save"
-_TAG = b"roundedmesh.revision"  # every roundedmesh scene's O.tags has it (scene.py)
+# Every scene YADE saves is a Boost serialization archive naming YADE's classes (yade::Body, yade::Sphere, ...);
+# a roundedmesh scene is one too, its meshes and materials in O.tags (scene.py).
+_ARCHIVE, _YADE_CLASS = b"serialization::archive", b"yade::"
 
 
 class CheckpointError(RuntimeError):
@@ -96,8 +98,6 @@ def _read_sidecar(path):
 def save(path):
     """Saves O's scene as a checkpoint at path, atomically (see the module's documentation). Returns the record
     written to the sidecar: sha256, size, iteration, time, saved (wall-clock time.time())."""
-    if not O.tags.has_key("roundedmesh.revision"):
-        raise ValueError(f"{path}: the scene has no roundedmesh bodies; roundedmesh.checkpoint saves roundedmesh scenes")
     partial = _partial_path(path)
     O.save(partial)
     _fsync(partial)
@@ -144,8 +144,8 @@ def _verified_record(path):
                               "or replaced after it was saved")
     with open(path, "rb") as f:
         scene = _decompressed(path, f.read())
-    if _TAG not in scene:
-        raise CheckpointError(f"{path}: the file holds no roundedmesh scene (no roundedmesh.revision tag)")
+    if _ARCHIVE not in scene[:64] or _YADE_CLASS not in scene:
+        raise CheckpointError(f"{path}: the file holds no YADE scene (no serialization archive of YADE's classes)")
     return matching[-1]
 
 

@@ -133,7 +133,7 @@ def test_a_scene_of_another_program_is_refused(saved, tmp_path):
     with gzip.open(other, "wb") as f:
         f.write(b"serialization::archive of some other program's scene")
     write_sidecar(other)
-    assert "holds no roundedmesh scene" in refused(other)
+    assert "holds no YADE scene" in refused(other)
     os.replace(other, saved)  # over the checkpoint, its sidecar left as it was
     assert "truncated, extended or replaced" in refused(saved)
 

@@ -1,6 +1,7 @@
 """scripts/s1_packing.py, the whole scene S1 (doc/scenes.md), on small runs: it runs end to end and writes every
-output, keeps every body in the box, moves the box as z = A sin(2 pi t / T) and stops it after three periods, and
-refuses bad input before it runs."""
+output, keeps every body in the box, moves the box as z = A sin(2 pi t / T) and stops it after three periods,
+runs YADE's own representations on the same scene, resumes a run from its checkpoint as if it had never stopped,
+and refuses bad input before it runs."""
 import csv
 import math
 import os
@@ -29,14 +30,19 @@ def rows(path):
 
 # 100 steps of 8 icospheres (42 nodes): a second of running, the rest is starting YADE.
 def test_a_short_run_writes_every_output_and_keeps_the_bodies_in_the_box(tmp_path):
-    out = run("--shape", "icosphere42", "--count", "8", "--duration", "0.01", "--output", str(tmp_path))
+    root = tmp_path
+    out = run("--shape", "icosphere42", "--count", "8", "--duration", "0.01", "--frames", "1", "--output", str(root))
     assert out.returncode == 0, out.stdout + out.stderr
     assert "Traceback" not in out.stderr, out.stderr
     assert out.stdout.count("machine: ") == 2 and out.stdout.count("command: ") == 2, out.stdout
-    for name in ("height.csv", "packing.csv", "timing.csv", "height.png", "vtk/icosphere42.pvd"):
-        assert (tmp_path / name).stat().st_size > 0, name
+    for name in ("fig11a_mean_height.png", "fig11a_mean_height.csv", "fig11b_packing.png", "fig11b_packing.csv",
+                 "fig10_packings.png", "summary.csv"):
+        assert (root / name).stat().st_size > 0, name
+    folder = root / "icosphere42"
+    for name in ("height.csv", "packing.csv", "final_state.csv", "timing.csv", "height.png", "vtk/icosphere42.pvd"):
+        assert (folder / name).stat().st_size > 0, name
 
-    height = rows(tmp_path / "height.csv")
+    height = rows(folder / "height.csv")
     assert [int(r["step"]) for r in height] == [100]
     assert all(int(r["bodies"]) == 8 and int(r["outside"]) == 0 for r in height)
     # the box stands where A sin(2 pi t / T) puts it, to rounding
@@ -44,15 +50,15 @@ def test_a_short_run_writes_every_output_and_keeps_the_bodies_in_the_box(tmp_pat
         assert abs(float(r["box_z_m"]) - AMPLITUDE * math.sin(2 * math.pi * float(r["time_s"]) / PERIOD)) < 1e-12
 
     # the frame at the end: the 8 bodies, every node inside the box (no contact has begun after 0.01 s)
-    datasets = ElementTree.parse(tmp_path / "vtk" / "icosphere42.pvd").getroot().findall("Collection/DataSet")
+    datasets = ElementTree.parse(folder / "vtk" / "icosphere42.pvd").getroot().findall("Collection/DataSet")
     assert [d.get("file") for d in datasets] == ["icosphere42_00000100.vtp"]
-    _, arrays = read_piece(tmp_path / "vtk" / datasets[0].get("file"))
+    _, arrays = read_piece(folder / "vtk" / datasets[0].get("file"))
     assert len(np.unique(arrays["body_id"])) == 8
     points = arrays["Points"]
     assert (np.abs(points[:, :2]) < 0.20).all() and (points[:, 2] > float(height[-1]["box_z_m"])).all()
 
     # Eq. 28 with the volume of a sphere of radius 0.025 m: the icosphere is scaled to it
-    packing = rows(tmp_path / "packing.csv")
+    packing = rows(folder / "packing.csv")
     assert [float(r["h_m"]) for r in packing] == [round(0.01 * k, 2) for k in range(1, 31)]
     for r in packing:
         h = float(r["h_m"])
@@ -60,10 +66,19 @@ def test_a_short_run_writes_every_output_and_keeps_the_bodies_in_the_box(tmp_pat
         assert math.isclose(float(r["packing_factor_percent"]), expected, rel_tol=1e-9)
     assert int(packing[-1]["bodies_below"]) == 8
 
-    (timing,) = rows(tmp_path / "timing.csv")
+    (timing,) = rows(folder / "timing.csv")
     assert (timing["threads"], timing["omp_max_threads"], timing["steps"]) == ("1", "1", "100")
-    assert float(timing["median_ms_per_step_shaking"]) > 0 and float(timing["median_cpu_ms_per_step_shaking"]) > 0
-    assert timing["median_ms_per_step_settling"] == "nan"
+    assert float(timing["shaking_median_ms_per_step"]) > 0 and float(timing["shaking_median_cpu_ms_per_step"]) > 0
+    assert timing["settling_median_ms_per_step"] == "nan"
+
+    # the final state: 8 bodies with unit quaternions, where height.csv's last row says they are
+    state = rows(folder / "final_state.csv")
+    positions = np.array([[float(r[k]) for k in ("x_m", "y_m", "z_m")] for r in state])
+    quaternions = np.array([[float(r[k]) for k in ("qw", "qx", "qy", "qz")] for r in state])
+    assert len(state) == 8 and np.allclose(np.linalg.norm(quaternions, axis=1), 1, atol=1e-12)
+    assert math.isclose(positions[:, 2].mean(), float(height[-1]["mean_height_m"]), rel_tol=1e-12)
+    (summary,) = rows(root / "summary.csv")
+    assert summary["run"] == "icosphere42" and summary["bodies"] == "8"
 
 
 # 1,600 steps of 5e-4 s (a quarter of this scene's stability limit) with one body: past the shaking's end,
@@ -72,7 +87,8 @@ def test_the_box_shakes_for_three_periods_then_stands_still(tmp_path):
     out = run("--shape", "icosphere12", "--count", "1", "--duration", "0.8", "--dt", "5e-4", "--sample", "10",
               "--frames", "4", "--output", str(tmp_path))
     assert out.returncode == 0, out.stdout + out.stderr
-    height = rows(tmp_path / "height.csv")
+    folder = tmp_path / "icosphere12"
+    height = rows(folder / "height.csv")
     assert [int(r["step"]) for r in height] == list(range(10, 1601, 10))
     for r in height:
         t, z = float(r["time_s"]), float(r["box_z_m"])
@@ -80,23 +96,87 @@ def test_the_box_shakes_for_three_periods_then_stands_still(tmp_path):
         assert r["phase"] == ("shaking" if shaking else "settling")
         assert abs(z - (AMPLITUDE * math.sin(2 * math.pi * t / PERIOD) if shaking else 0.0)) < 1e-12, (t, z)
         assert int(r["outside"]) == 0 and int(r["bodies"]) == 1
-    (timing,) = rows(tmp_path / "timing.csv")
+    (timing,) = rows(folder / "timing.csv")
     assert (timing["shaking_windows"], timing["settling_windows"]) == ("150", "10")
-    datasets = ElementTree.parse(tmp_path / "vtk" / "icosphere12.pvd").getroot().findall("Collection/DataSet")
+    datasets = ElementTree.parse(folder / "vtk" / "icosphere12.pvd").getroot().findall("Collection/DataSet")
     assert [(round(float(d.get("timestep")), 9), d.get("file")) for d in datasets] == \
         [(round(0.2 * k, 9), f"icosphere12_{400 * k:08d}.vtp") for k in (1, 2, 3, 4)]
+
+
+# One step of 4 gummy bears, as rounded bodies and as YADE's 40-sphere clumps: every representation starts from
+# S1's lattice with the same jitter and orientations. A clump's centre is its spheres' union's, within 0.3 mm of
+# the bear's (roundedmesh.peers); one step of free fall moves both alike (g dt^2 = 1e-7 m).
+def test_yade_peers_start_where_the_rounded_bodies_start(tmp_path):
+    out = run("--shape", "gummy_bear", "--peers", "clumps", "--count", "4", "--duration", "1e-4", "--frames", "1",
+              "--output", str(tmp_path))
+    assert out.returncode == 0, out.stdout + out.stderr
+    final = {}
+    for name in ("gummy_bear", "gummy_bear_clumps"):
+        state = rows(tmp_path / name / "final_state.csv")
+        final[name] = np.array([[float(r[k]) for k in ("x_m", "y_m", "z_m", "qw", "qx", "qy", "qz")] for r in state])
+        (row,) = rows(tmp_path / name / "height.csv")
+        assert int(row["bodies"]) == 4 and int(row["outside"]) == 0, name
+    assert np.abs(final["gummy_bear"][:, :3] - final["gummy_bear_clumps"][:, :3]).max() < 3e-4
+    summary = rows(tmp_path / "summary.csv")
+    assert [r["run"] for r in summary] == ["gummy_bear", "gummy_bear_clumps"]
+    (clumps,) = rows(tmp_path / "gummy_bear_clumps" / "height.csv")
+    assert clumps["candidates"] == "" and int(clumps["contacts"]) == 0  # YADE's counts: none after one step
+
+
+# 500 steps of 4 icospheres, a checkpoint every 200: the run is taken as stopped after its last checkpoint (its
+# timing.csv removed) and resumed from step 400; it must end exactly as the uninterrupted run (same floats).
+def test_a_resumed_run_ends_exactly_as_the_uninterrupted_one(tmp_path):
+    arguments = ["--shape", "icosphere12", "--count", "4", "--duration", "0.05", "--checkpoint-every", "200",
+                 "--frames", "5", "--output", str(tmp_path)]
+    assert run(*arguments).returncode == 0
+    folder = tmp_path / "icosphere12"
+    uninterrupted = {name: (folder / name).read_text() for name in ("final_state.csv", "packing.csv")}
+    heights = [{k: v for k, v in r.items() if "ms" not in k} for r in rows(folder / "height.csv")]
+    frames = (folder / "vtk" / "icosphere12.pvd").read_text()
+    (folder / "timing.csv").unlink()
+    out = run(*arguments, "--resume")
+    assert out.returncode == 0 and "resumed at step 400" in out.stdout, out.stdout + out.stderr
+    for name, text in uninterrupted.items():
+        assert (folder / name).read_text() == text, name
+    assert [{k: v for k, v in r.items() if "ms" not in k} for r in rows(folder / "height.csv")] == heights
+    assert (folder / "vtk" / "icosphere12.pvd").read_text() == frames
+    (timing,) = rows(folder / "timing.csv")
+    assert timing["resumed_at"] == "400"
+    out = run(*arguments, "--resume")  # a complete run is not run again
+    assert out.returncode == 0 and "not run again" in out.stdout, out.stdout + out.stderr
 
 
 def test_bad_input_is_refused_before_any_step(tmp_path):
     blocker = tmp_path / "a_file"
     blocker.write_text("")
     cases = [(["--shape", "cube"], "unknown shape"),
-             (["--shape", "sphere"], "perfect spheres are left out"),
-             (["--output", str(blocker / "out")], "cannot write there"),
+             (["--peers", "spheres"], "unknown peer"),
+             (["--checkpoint-every", "150"], "multiple of --sample"),
+             (["--output", str(blocker / "out")], "cannot write to"),
              (["--dt", "7e-5"], "whole number of steps"),
              (["--shape", "icosphere12", "--count", "2", "--dt", "0.01"], "above the stability limit")]
     for arguments, message in cases:
         output = tmp_path / "out"
         out = run(*arguments, *(["--output", str(output)] if "--output" not in arguments else []))
         assert out.returncode != 0 and message in out.stderr, (arguments, out.stdout + out.stderr)
-        assert not (output / "height.csv").exists(), arguments
+        assert not list(output.rglob("height.csv")), arguments
+
+
+def test_a_resume_from_a_missing_damaged_or_foreign_checkpoint_is_refused(tmp_path):
+    arguments = ["--shape", "icosphere12", "--count", "2", "--duration", "0.03", "--checkpoint-every", "100",
+                 "--frames", "1", "--output", str(tmp_path)]
+    out = run(*arguments, "--resume")
+    assert out.returncode != 0 and "does not exist" in out.stderr, out.stdout + out.stderr
+    assert run(*arguments).returncode == 0
+    folder = tmp_path / "icosphere12"
+    (folder / "timing.csv").unlink()
+    heights = (folder / "height.csv").read_text()
+    for changed in (["--seed", "2"], ["--count", "3"], ["--dt", "5e-5"]):
+        out = run(*arguments, *changed, "--resume")
+        assert out.returncode != 0 and "checkpoint of another scene" in out.stderr, (changed, out.stdout + out.stderr)
+    checkpoint = folder / "checkpoint.yade.gz"
+    data = checkpoint.read_bytes()
+    checkpoint.write_bytes(data[: len(data) // 2])
+    out = run(*arguments, "--resume")
+    assert out.returncode != 0 and "truncated" in out.stderr and str(checkpoint) in out.stderr, out.stderr
+    assert (folder / "height.csv").read_text() == heights  # refused before any work
