@@ -62,11 +62,10 @@ def mean_height_figure(root, runs):
         axes.axvspan(0, 0.75, color="C0", alpha=0.06, label="box shaking")
         axes.set(xlabel="time [s]", ylabel="mean height of the centres [mm]")
         axes.grid(alpha=0.3)
-    end.set_xlim(0.45, t[-1])
     lows = [float(r[2]) for r in table if r[1] >= 0.45]
-    end.set_ylim(1e3 * min(lows) - 5, 1e3 * max(lows) + 5)
+    if lows:  # a run as long as S1's
+        end.set(xlim=(0.45, t[-1]), ylim=(1e3 * min(lows) - 5, 1e3 * max(lows) + 5), title="from t = 0.45 s")
     whole.set_title("S1: mean height (Fig. 11a)")
-    end.set_title("from t = 0.45 s")
     end.legend(fontsize=8)
     figure.tight_layout()
     figure.savefig(os.path.join(root, "fig11a_mean_height.png"), dpi=120)
