@@ -61,8 +61,8 @@ A window's time excludes sampling, checkpoints and frames. The recorder runs in 
 step (about 0.015 ms per step), inside one O.run, so that no window includes the up to 40 ms by which
 O.run(n, True) notices the end of a run. --resume continues each run from its checkpoint (a run whose timing.csv
 exists is complete and skipped); height.csv keeps the rows up to the checkpoint, the run's timing the resumed
-part. --threads sets OMP_NUM_THREADS for the roundedmesh engine in each run's process (YADE's own engines run
-on one thread).
+part. --threads sets OMP_NUM_THREADS in each run's process: for roundedmesh's engine and for YADE's own OpenMP
+loops alike.
 
 Bad input stops the script before any run starts: an unknown shape or peer, a time step above the stability
 limit of any run asked for (rm.critical_timestep(); YADE's utils.PWaveTimeStep() for the peers) or one that
@@ -122,7 +122,7 @@ def parse(argv):
     parser.add_argument("--duration", type=float, default=1.35, help="simulated time [s] (default 1.35)")
     parser.add_argument("--sample", type=int, default=100, help="steps per window of height.csv (default 100)")
     parser.add_argument("--frames", type=int, default=14, help="ParaView frames over a run (default 14)")
-    parser.add_argument("--threads", type=int, default=1, help="OpenMP threads of the roundedmesh engine (default 1)")
+    parser.add_argument("--threads", type=int, default=1, help="OpenMP threads (default 1)")
     parser.add_argument("--checkpoint-every", type=int, default=1000,
                         help="steps between checkpoints, a multiple of --sample (default 1000)")
     parser.add_argument("--resume", action="store_true", help="continue each run from its checkpoint")
