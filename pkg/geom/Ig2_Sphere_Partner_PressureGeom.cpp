@@ -27,13 +27,6 @@ GeomTest wholeCircle(const Vector3r& normal, const Vector3r& centre, Real overla
   return {Rejection::None};
 }
 
-// The plane through `point` normal to the line from the origin (the sphere's centre) to it; `fallback` (toward
-// the sphere) when the point is the centre itself.
-Plane planeThrough(const Vector3r& point, const Vector3r& fallback) {
-  const Real distance = point.norm();
-  return {point, distance > 0 ? Vector3r(-point / distance) : fallback};
-}
-
 }  // namespace
 
 GeomTest sphereSphereGeom(Real radius, const Vector3r& centre2, Real radius2, const RelativeMotion& motion,
@@ -54,7 +47,10 @@ Plane boxPlane(const Box& box, const Vector3r& centre, const Matrix3r& orientati
   const Vector3r local = orientation.transpose() * -centre;  // the sphere's centre in the box's frame
   const Vector3r& h = box.halfExtents;
   const Vector3r nearest = local.cwiseMax(-h).cwiseMin(h);
-  if (nearest != local) return planeThrough(centre + orientation * nearest, Vector3r::Zero());
+  if (nearest != local) {  // outside: the nearest point differs from the sphere's centre (the origin)
+    const Vector3r point = centre + orientation * nearest;
+    return {point, -point.normalized()};
+  }
   // Sunk into the box: pushed out through the face it is least deep behind.
   int axis;
   (h - local.cwiseAbs()).minCoeff(&axis);
@@ -72,7 +68,10 @@ Plane facetPlane(const std::array<Vector3r, 3>& corners) {
   const ConvexPolygon triangle = ConvexPolygon::triangle(Vector2r::Zero(), inPlane(corners[1]), inPlane(corners[2]));
   const Vector2r p = triangle.closestPoint(inPlane(Vector3r::Zero()));
   if (normal.dot(-corners[0]) < 0) normal = -normal;  // both sides touch: the one the sphere is on
-  return planeThrough(corners[0] + p.x() * u + p.y() * v, normal);
+  const Vector3r point = corners[0] + p.x() * u + p.y() * v;
+  // Normal to the line from the sphere's centre, or the facet's own normal if the centre lies on the facet.
+  const Real distance = point.norm();
+  return {point, distance > 0 ? Vector3r(-point / distance) : normal};
 }
 
 }  // namespace roundedmesh

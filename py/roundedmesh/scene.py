@@ -183,13 +183,18 @@ def _materials(kind):
 _ALL_KINDS = ("body", "sphere", "partner")
 
 
-def _require_one_deformable(material, others, name, other_kind, exclude=None):
+def _require_one_deformable(material, others, name, other_kind=None, exclude=None):
     """Two rigid bodies (young = inf) have no Hertz contact: refuse a rigid material if a rigid one is
-    already among those it can touch (`others`: 'body', 'partner' or both; body `exclude` is the one whose
-    material changes)."""
+    already among those it can touch (`others`: among 'body', 'sphere', 'partner'; body `exclude` is the one
+    whose material changes). `other_kind` names them in the message; without it, the kinds of the rigid ones
+    found (rounded and sphere bodies)."""
     if math.isinf(material.young):
-        rigid = sorted(i for kind in others for i, m in _materials(kind).items()
-                       if math.isinf(m.young) and i != exclude)
+        found = {kind: sorted(i for i, m in _materials(kind).items() if math.isinf(m.young) and i != exclude)
+                 for kind in others}
+        rigid = sorted(i for ids in found.values() for i in ids)
+        if other_kind is None:
+            other_kind = " or ".join(word for kind, word in (("body", "rounded"), ("sphere", "sphere"))
+                                     if found.get(kind)) + " bod(ies)"
         if rigid:
             raise ValueError(f"{name}: a rigid material (young=inf) cannot touch the rigid {other_kind} "
                              f"{', '.join(map(str, rigid))}; give one side a finite modulus")
@@ -294,7 +299,7 @@ def assign_material(body_id, material):
     if _tag(f"body.{body.id}") or _tag(f"sphere.{body.id}"):
         return set_material(body.id, material)
     partner_kind(body)
-    _require_one_deformable(material, ("body", "sphere"), "material", "rounded or sphere bod(ies)")
+    _require_one_deformable(material, ("body", "sphere"), "material")
     _set_tag(f"partner.{body.id}", json.dumps(_material_record(material)))
     _new_revision()
 
@@ -323,7 +328,7 @@ def set_material(body_id, material):
             _set_sphere_mass(body, material)
             _set_tag(f"sphere.{body.id}", json.dumps(_material_record(material)))
     elif _tag(f"partner.{body.id}"):
-        _require_one_deformable(material, ("body", "sphere"), "material", "rounded or sphere bod(ies)")
+        _require_one_deformable(material, ("body", "sphere"), "material")
         _set_tag(f"partner.{body.id}", json.dumps(_material_record(material)))
     else:
         raise ValueError(f"body_id: body {body.id} is neither a rounded body nor a contact partner nor a "
@@ -455,7 +460,8 @@ class _SceneState:
             if O.dt > limit:
                 raise ValueError(
                     f"O.dt = {O.dt:g} s is above the stability limit {limit:g} s of the contact between "
-                    f"body {body} and body {other} (roundedmesh.critical_timestep()); reduce O.dt")
+                    f"{'rounded' if body in self.body_ids else 'sphere'} body {body} and body {other} "
+                    "(roundedmesh.critical_timestep()); reduce O.dt")
             self.checked_dt = O.dt
 
 

@@ -261,3 +261,29 @@ def test_a_sphere_body_changed_behind_the_engine_stops_the_run():
     O.bodies[ball].shape = utils.box((0, 0, 0), (1, 1, 1)).shape
     with pytest.raises(RuntimeError, match=f"sphere body {ball}: its YADE shape is no longer a Sphere"):
         O.step()
+
+
+# Two rigid sides have no Hertz contact: a rigid sphere body is refused beside a rigid partner, and a rigid
+# partner beside a rigid sphere body, each naming the other; the scene stays as it was.
+def test_rigid_sphere_body_beside_a_rigid_partner_is_refused():
+    rigid = rm.HertzMaterial(young=math.inf, poisson=0.3, density=1000)
+    ball = rm.add_sphere((0, 0, 0), 0.01, rigid)
+    wall = O.bodies.append(utils.wall(-0.01, axis=2))
+    before = len(O.bodies), dict(O.tags)
+    with pytest.raises(ValueError, match=f"rigid sphere bod\\(ies\\) {ball}"):
+        rm.assign_material(wall, rigid)
+    rm.assign_material(wall, SOFT)
+    with pytest.raises(ValueError, match=f"rigid bod\\(ies\\) {ball}"):
+        rm.add_sphere((1, 0, 0), 0.01, rigid)
+    assert len(O.bodies) == before[0]
+
+
+# The time-step check names a sphere body as such when its contact sets the limit.
+def test_time_step_above_the_limit_names_the_sphere_body():
+    a = rm.add_sphere((0, 0, 0), 0.01, SOFT)
+    rm.add_sphere((0.5, 0, 0), 0.01, SOFT)
+    engines()
+    O.dt = 1.5 * rm.critical_timestep()
+    with pytest.raises(RuntimeError, match=f"stability limit .* sphere body {a} and body"):
+        O.step()
+    assert O.iter == 0 and O.bodies[a].state.pos == Vector3(0, 0, 0)
