@@ -206,6 +206,31 @@ def test_sphere_bodies_survive_save_and_load():
     assert [O.forces.f(i) for i in (a, b)] == forces
 
 
+# A checkpoint (rm.checkpoint, a .yade.gz file through O.save) of a scene of sphere bodies only resumes, in a fresh
+# scene, with the sphere bodies, and the run goes on bit for bit: 50 steps after the checkpoint, through contacts
+# with the floor, give the very positions the uninterrupted run reached.
+def test_sphere_bodies_resume_from_a_checkpoint_bit_for_bit(tmp_path):
+    ids = [rm.add_sphere((0.021 * k, 0, 0.0099 + 0.002 * k), 0.01, with_damping(SOFT, 1e-3)) for k in range(3)]
+    floor = O.bodies.append(utils.wall(0, axis=2, sense=1))
+    rm.assign_material(floor, STIFF)
+    engines(gravity=(0, 0, -9.81))
+    O.dt = 0.1 * rm.critical_timestep()
+    O.run(20, True)
+    path = str(tmp_path / "spheres.yade.gz")
+    rm.checkpoint.save(path)
+    O.run(50, True)
+    uninterrupted = [O.bodies[i].state.pos for i in ids]
+    O.reset()
+    rm.checkpoint.resume(path)
+    assert sorted(rm.sphere_bodies()) == ids and O.iter == 20
+    contacts = 0
+    for _ in range(50):
+        O.step()
+        contacts += rm.statistics()["sphere_contacts"]
+    assert [O.bodies[i].state.pos for i in ids] == uninterrupted
+    assert contacts > 0  # the resumed steps had contacts to reproduce
+
+
 def test_mass_inertia_and_yade_view():
     ball = rm.add_sphere((1, 2, 3), 0.02, STIFF)
     b = O.bodies[ball]
