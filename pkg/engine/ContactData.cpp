@@ -8,6 +8,7 @@ ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& other)
   narrowPhase += other.narrowPhase;
   quadratureContacts += other.quadratureContacts;
   directContacts += other.directContacts;
+  sphereContacts += other.sphereContacts;
   slidingContacts += other.slidingContacts;
   neighbourRebuilds += other.neighbourRebuilds;
   candidateRebuilds += other.candidateRebuilds;

@@ -23,13 +23,14 @@ struct ContactStatistics {
   NarrowPhaseCounts narrowPhase;  // triangle pairs (or triangle-partner pairs) tested, and their rejections
   int quadratureContacts = 0;  // triangle contacts integrated by quadrature
   int directContacts = 0;      // triangle contacts in the direct regime
-  int slidingContacts = 0;     // triangle contacts sliding (Eq. 21)
+  int sphereContacts = 0;      // contacts of a sphere body with a sphere body or partner (one per pair)
+  int slidingContacts = 0;     // triangle and sphere contacts sliding (Eq. 21)
   int neighbourRebuilds = 0;   // rebuilds of the broad phase's neighbour list
   int candidateRebuilds = 0;   // triangle-pair candidate lists rebuilt (from their pair's near list)
   int nearRebuilds = 0;        // near lists rebuilt from the triangle trees
 
   ContactStatistics& operator+=(const ContactStatistics& other);
-  int contacts() const { return quadratureContacts + directContacts; }
+  int contacts() const { return quadratureContacts + directContacts + sphereContacts; }
 };
 
 // Wall-clock seconds of each stage of the last step.
@@ -39,8 +40,9 @@ struct StageTimes {
   Real reduction = 0;   // pair wrenches summed per body
 };
 
-// A candidate of the broad phase: rounded body `body` against `other`, an index into the model's bodies
-// (other < bodies.size()) or, past them, into its partners (other - bodies.size()). `neighbour` is its entry
+// A candidate of the broad phase: `body` against `other`, each an index into the model's bodies
+// (< bodies.size()) or, past them, into its partners (- bodies.size()). `body` is a rounded body, or a sphere
+// body when `other` is a partner too. `neighbour` is its entry
 // in ContactData::neighbours (-1 for a pair resolved on its own, without the lists kept between steps).
 struct BodyPair {
   int body;
@@ -98,6 +100,16 @@ struct ContactData {
   std::vector<BodyPair> pairs;                    // pairs whose bounds overlap this step
   std::vector<PairResult> pairResults;            // one per pair
   std::vector<std::vector<PressureGeom>> geoms;   // scratch: one per thread
+
+  // The state and clump of an engine index: a body's, or past them a partner's.
+  const BodyState& state(int index) const {
+    const int bodyCount = static_cast<int>(bodyStates.size());
+    return index < bodyCount ? bodyStates[index] : partnerStates[index - bodyCount];
+  }
+  int clump(int index) const {
+    const int bodyCount = static_cast<int>(bodyClumps.size());
+    return index < bodyCount ? bodyClumps[index] : partnerClumps[index - bodyCount];
+  }
 
   // Sizes every array for `model`; states are left for the caller to fill.
   void resize(const ContactModel& model);

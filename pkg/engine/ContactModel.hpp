@@ -1,6 +1,7 @@
 // What the contact engine knows that does not change from step to step: the rounded bodies with their
 // meshes and materials, the rigid-shaped partners (planes, YADE Walls, Boxes, Facets and Spheres) with
-// theirs, and the options of the pressure law. Indices into `bodies` and `partners` are the engine's; `id`
+// theirs, and the options of the pressure law. A partner may be a sphere body (rm.add_sphere), the engine's
+// second kind of body: an analytic Sphere whose contacts with the other partners the engine computes too. Indices into `bodies` and `partners` are the engine's; `id`
 // is YADE's body id.
 #pragma once
 
@@ -38,6 +39,7 @@ struct Partner {
   int id;
   PartnerShape shape;
   HertzMaterial material;
+  bool sphereBody = false;  // a Sphere that touches the other partners through the engine (doc/architecture.md)
 };
 
 // Skins of the lists kept between steps, as fractions of a volume-equivalent radius. The broad phase's

@@ -18,9 +18,12 @@ struct Side {
   const HertzMaterial* material;
 };
 
-// Infinite for two rigid sides, which have no Hertz contact (the scene refuses them).
-Real pairLimit(const Side& a, const Side& b) {
+// Infinite for two rigid sides, which have no Hertz contact (the scene refuses them), and for two sides that
+// do not move under forces.
+Real pairLimit(Side a, Side b) {
   if (std::isinf(a.material->young) && std::isinf(b.material->young)) return std::numeric_limits<Real>::infinity();
+  if (!(a.mass > 0)) std::swap(a, b);
+  if (!(a.mass > 0)) return std::numeric_limits<Real>::infinity();
   const HertzPhys phys = Ip2_HertzMaterial_HertzMaterial_HertzPhys(*a.material, *b.material);
   const Real mass = b.mass > 0 ? a.mass * b.mass / (a.mass + b.mass) : a.mass;
   const Real radius = std::isinf(b.radius) ? a.radius : a.radius * b.radius / (a.radius + b.radius);
@@ -38,15 +41,25 @@ StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>
                               const std::vector<Real>& partnerMasses) {
   StabilityLimit limit;
   const int bodyCount = static_cast<int>(model.bodies.size());
+  // Every side as an engine index (bodies, then partners), and which ones move through the engine's contacts:
+  // rounded bodies and sphere bodies.
+  const int count = bodyCount + static_cast<int>(model.partners.size());
+  auto side = [&](int i) -> Side {
+    if (i < bodyCount) return {bodyMasses[i], model.bodies[i].equivalentRadius, &model.bodies[i].material};
+    const Partner& partner = model.partners[i - bodyCount];
+    return {partnerMasses[i - bodyCount], partnerRadius(partner.shape), &partner.material};
+  };
+  auto isBody = [&](int i) { return i < bodyCount || model.partners[i - bodyCount].sphereBody; };
   // Bodies alike in mass, size and material have the same limit: each kind is checked once.
   std::vector<int> kinds;
-  for (int b = 0; b < bodyCount; ++b) {
-    const RoundedBody& body = model.bodies[b];
+  for (int b = 0; b < count; ++b) {
+    if (!isBody(b)) continue;
+    const Side s = side(b);
     const bool seen = std::any_of(kinds.begin(), kinds.end(), [&](int k) {
-      const RoundedBody& other = model.bodies[k];
-      return bodyMasses[k] == bodyMasses[b] && other.equivalentRadius == body.equivalentRadius &&
-             std::tie(other.material.young, other.material.poisson, other.material.damping) ==
-                 std::tie(body.material.young, body.material.poisson, body.material.damping);
+      const Side o = side(k);
+      return (k < bodyCount) == (b < bodyCount) && o.mass == s.mass && o.radius == s.radius &&
+             std::tie(o.material->young, o.material->poisson, o.material->damping) ==
+                 std::tie(s.material->young, s.material->poisson, s.material->damping);
     });
     if (!seen) kinds.push_back(b);
   }
@@ -54,14 +67,11 @@ StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>
     if (dt < limit.timeStep) limit = {dt, b, other};
   };
   for (int b : kinds) {
-    const Side side{bodyMasses[b], model.bodies[b].equivalentRadius, &model.bodies[b].material};
     for (int k : kinds)
-      if (k >= b)
-        consider(pairLimit(side, {bodyMasses[k], model.bodies[k].equivalentRadius, &model.bodies[k].material}), b, k);
-    for (int p = 0; p < static_cast<int>(model.partners.size()); ++p) {
-      const Partner& partner = model.partners[p];
-      consider(pairLimit(side, {partnerMasses[p], partnerRadius(partner.shape), &partner.material}), b, bodyCount + p);
-    }
+      if (k >= b) consider(pairLimit(side(b), side(k)), b, k);
+    // Partners other than bodies: a sphere body meets them all, a rounded body every partner.
+    for (int p = bodyCount; p < count; ++p)
+      if (b < bodyCount || !isBody(p)) consider(pairLimit(side(b), side(p)), b, p);
   }
   return limit;
 }

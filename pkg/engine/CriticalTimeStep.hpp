@@ -23,17 +23,17 @@ inline Real criticalTimeStep(Real mass, Real effectiveModulus, Real radius, Real
   return 2 / omega * (std::sqrt(1 + zeta * zeta) - zeta);
 }
 
-// The scene's limit: criticalTimeStep over every pair a rounded body can form (with another rounded body
-// or a partner), each body taken as a sphere of its volume-equivalent radius r, a partner as a plane or its
-// sphere: R* = r1 r2 / (r1 + r2), reduced mass, at an overlap of min(r1, r2) / 10, the deepest a Hertz
+// The scene's limit: criticalTimeStep over every pair a rounded body or a sphere body can form (with another
+// body or a partner), each rounded body taken as a sphere of its volume-equivalent radius r, a partner as a
+// plane or its sphere: R* = r1 r2 / (r1 + r2), reduced mass, at an overlap of min(r1, r2) / 10, the deepest a Hertz
 // contact is meant to go. An estimate for compact bodies: triangles much flatter than r, or an elongated
 // body's lower effective mass when a contact also turns it, lower the true limit.
 // bodyMasses[b]: the rounded bodies' masses [kg]; partnerMasses[p]: the mass of a partner that moves
-// under forces, 0 for a driven or fixed one.
+// under forces, 0 for a driven or fixed one (also for a sphere body).
 struct StabilityLimit {
   Real timeStep = std::numeric_limits<Real>::infinity();  // [s]
-  int body = -1;   // index of the limiting rounded body
-  int other = -1;  // the other side: a rounded body (< bodies.size()) or, past them, a partner
+  int body = -1;   // index of the limiting body: a rounded body (< bodies.size()) or, past them, a sphere body
+  int other = -1;  // the other side: a rounded body or, past them, a partner
 };
 
 StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>& bodyMasses,

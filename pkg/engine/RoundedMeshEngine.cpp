@@ -7,6 +7,8 @@
 
 #include <omp.h>
 
+#include "pkg/common/Overloaded.hpp"
+#include "pkg/engine/SpherePair.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Box_PressureGeom.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Plane_PressureGeom.hpp"
@@ -16,13 +18,6 @@
 
 namespace roundedmesh {
 namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <class... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
 
 constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
 // Passes of one pair's evaluation while its deepest contact outgrows its list: each grows the depth held by half;
@@ -34,12 +29,6 @@ void planeGeometry(const RoundedMesh& mesh, const Plane& global, const BodyState
                    const RelativeMotion& motion, const GeomOutput& out) {
   Ig2_RoundedMesh_Plane_PressureGeom(mesh, Plane{toBody * (global.point - body.position), toBody * global.normal},
                                      motion, out);
-}
-
-std::array<Vector3r, 3> facetCorners(const Facet& facet, const BodyState& state) {
-  std::array<Vector3r, 3> corners;
-  for (int i = 0; i < 3; ++i) corners[i] = state.position + state.orientation * facet.vertices[i];
-  return corners;
 }
 
 AlignedBox3r ball(const Vector3r& centre, Real radius) {
@@ -60,7 +49,7 @@ AlignedBox3r partnerBox(const PartnerShape& shape, const BodyState& state) {
                                },
                                [&](const Facet& facet) {
                                  AlignedBox3r box;
-                                 for (const Vector3r& x : facetCorners(facet, state)) box.extend(x);
+                                 for (const Vector3r& x : facetCorners(facet, state.position, state.orientation)) box.extend(x);
                                  return box;
                                },
                                [&](const Sphere& sphere) { return ball(state.position, sphere.radius); }},
@@ -159,7 +148,7 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
                                                            toBody * s2.orientation.toRotationMatrix(), motion, out);
                         },
                         [&](const Facet& facet) {
-                          std::array<Vector3r, 3> corners = facetCorners(facet, s2);
+                          std::array<Vector3r, 3> corners = facetCorners(facet, s2.position, s2.orientation);
                           for (Vector3r& x : corners) x = local(x);
                           Ig2_RoundedMesh_Facet_PressureGeom(*body.mesh, corners, kDeepestOverlap * body.equivalentRadius,
                                                              motion, out);
@@ -193,8 +182,16 @@ void rebuildNeighbours(const ContactModel& model, ContactData& data, const std::
     mean += x;
     meanSq += x.cwiseProduct(x);
   }
+  int movers = bodyCount;
+  for (int p = 0; p < count - bodyCount; ++p)
+    if (model.partners[p].sphereBody) {
+      const Vector3r& x = data.partnerStates[p].position;
+      mean += x;
+      meanSq += x.cwiseProduct(x);
+      ++movers;
+    }
   int axis;
-  (meanSq * bodyCount - mean.cwiseProduct(mean)).maxCoeff(&axis);
+  (meanSq * movers - mean.cwiseProduct(mean)).maxCoeff(&axis);
 
   std::vector<int> order(count);
   std::iota(order.begin(), order.end(), 0);
@@ -207,8 +204,14 @@ void rebuildNeighbours(const ContactModel& model, ContactData& data, const std::
     const int i = order[k];
     for (int l = k + 1; l < count && grownBoxes[order[l]].min()[axis] <= grownBoxes[i].max()[axis]; ++l) {
       const int j = order[l];
-      if ((i >= bodyCount && j >= bodyCount) || !grownBoxes[i].intersects(grownBoxes[j])) continue;
-      neighbours.push_back({std::min(i, j), std::max(i, j)});
+      if (!grownBoxes[i].intersects(grownBoxes[j])) continue;
+      if (i < bodyCount || j < bodyCount) {
+        neighbours.push_back({std::min(i, j), std::max(i, j)});
+      } else if (model.partners[i - bodyCount].sphereBody || model.partners[j - bodyCount].sphereBody) {
+        // Two partners meet through the engine only if one is a sphere body, which goes first.
+        const bool iFirst = model.partners[i - bodyCount].sphereBody && (i < j || !model.partners[j - bodyCount].sphereBody);
+        neighbours.push_back(iFirst ? BodyPair{i, j} : BodyPair{j, i});
+      }
     }
   }
   // Sorted, so that the pairs and the sums over them do not depend on how the sweep met them.
@@ -238,8 +241,10 @@ void broadPhase(const ContactModel& model, ContactData& data) {
     boxes[b] = ball(data.bodyStates[b].position, model.bodies[b].mesh->sphereBoundRadius());
     smallest = std::min(smallest, model.bodies[b].equivalentRadius);
   }
-  for (int p = 0; p < count - bodyCount; ++p)
+  for (int p = 0; p < count - bodyCount; ++p) {
     boxes[bodyCount + p] = partnerBox(model.partners[p].shape, data.partnerStates[p]);
+    if (model.partners[p].sphereBody) smallest = std::min(smallest, std::get<Sphere>(model.partners[p].shape).radius);
+  }
   bool current = static_cast<int>(data.neighbourBoxes.size()) == count;
   for (int i = 0; current && i < count; ++i) current = data.neighbourBoxes[i].contains(boxes[i]);
   if (!current) {
@@ -248,8 +253,8 @@ void broadPhase(const ContactModel& model, ContactData& data) {
   }
   data.pairs.clear();
   for (const BodyPair& pair : data.neighbours) {
-    const int clump = data.bodyClumps[pair.body];
-    const int otherClump = pair.other < bodyCount ? data.bodyClumps[pair.other] : data.partnerClumps[pair.other - bodyCount];
+    const int clump = data.clump(pair.body);
+    const int otherClump = data.clump(pair.other);
     if ((clump >= 0 && clump == otherClump) || !boxes[pair.body].intersects(boxes[pair.other])) continue;
     if (pair.other < bodyCount &&
         (data.bodyStates[pair.body].position - data.bodyStates[pair.other].position).norm() >=
@@ -259,15 +264,21 @@ void broadPhase(const ContactModel& model, ContactData& data) {
   }
 }
 
-void pairGeometry(const ContactModel& model, const ContactData& data, const BodyPair& pair,
-                  std::vector<PressureGeom>& geoms, ContactStatistics& statistics, CandidateList* candidates) {
-  const int bodyCount = static_cast<int>(model.bodies.size());
-  const BodyState& s1 = data.bodyStates[pair.body];
-  const BodyState& s2 = pair.other < bodyCount ? data.bodyStates[pair.other] : data.partnerStates[pair.other - bodyCount];
-  const Matrix3r toBody = s1.orientation.toRotationMatrix().transpose();
+RelativeMotion relativeMotion(const BodyState& s1, const BodyState& s2, const Matrix3r& toBody) {
   RelativeMotion motion;
   motion.linear = toBody * (s2.velocity - s1.velocity + s2.angularVelocity.cross(s1.position - s2.position));
   motion.angular = toBody * (s2.angularVelocity - s1.angularVelocity);
+  return motion;
+}
+
+Wrench reaction(const Wrench& onBody, const Vector3r& bodyPosition, const Vector3r& otherPosition) {
+  return {-onBody.force, -onBody.torque + (otherPosition - bodyPosition).cross(onBody.force)};
+}
+
+void pairGeometry(const ContactModel& model, const ContactData& data, const BodyPair& pair,
+                  std::vector<PressureGeom>& geoms, ContactStatistics& statistics, CandidateList* candidates) {
+  const BodyState& s1 = data.bodyStates[pair.body];
+  const RelativeMotion motion = relativeMotion(s1, data.state(pair.other), s1.orientation.toRotationMatrix().transpose());
   geoms.clear();
   contactGeometry(model, data, pair, motion, candidates, geoms, statistics);
   ++statistics.bodyPairs;
@@ -314,16 +325,15 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   }
   result.onBody.force = toGlobal * local.force;
   result.onBody.torque = toGlobal * local.torque;
-  // The other side receives the opposite forces at the same points (for a mesh, Eq. 15 on its own
-  // triangle's corners gives the same wrench: doc/physics.md).
-  result.onOther.force = -result.onBody.force;
-  result.onOther.torque = -result.onBody.torque + (s1.position - s2.position).cross(result.onOther.force);
+  // For a mesh, Eq. 15 on its own triangle's corners gives the same wrench as reaction's (doc/physics.md).
+  result.onOther = reaction(result.onBody, s1.position, s2.position);
   return result;
 }
 
 PairResult resolvePair(const ContactModel& model, const ContactData& data, const BodyPair& pair,
                        std::vector<PressureGeom>& scratch, std::vector<TriangleContact>* contacts,
                        CandidateList* candidates) {
+  if (pair.body >= static_cast<int>(model.bodies.size())) return resolveSpherePair(model, data, pair);
   ContactStatistics statistics;
   pairGeometry(model, data, pair, scratch, statistics, candidates);
   PairResult result = pairLoad(model, data, pair, scratch, contacts);
@@ -350,11 +360,13 @@ void RoundedMeshEngine(const ContactModel& model, ContactData& data) {
   const int bodyCount = static_cast<int>(model.bodies.size());
   for (Wrench& w : data.bodyWrenches) w = Wrench();
   for (Wrench& w : data.partnerWrenches) w = Wrench();
+  auto wrench = [&](int index) -> Wrench& {
+    return index < bodyCount ? data.bodyWrenches[index] : data.partnerWrenches[index - bodyCount];
+  };
   for (int k = 0; k < pairCount; ++k) {
     const PairResult& r = data.pairResults[k];
-    Wrench& body = data.bodyWrenches[data.pairs[k].body];
-    const int other = data.pairs[k].other;
-    Wrench& otherWrench = other < bodyCount ? data.bodyWrenches[other] : data.partnerWrenches[other - bodyCount];
+    Wrench& body = wrench(data.pairs[k].body);
+    Wrench& otherWrench = wrench(data.pairs[k].other);
     body.force += r.onBody.force;
     body.torque += r.onBody.torque;
     otherWrench.force += r.onOther.force;

@@ -2,7 +2,8 @@
 //   1. broadPhase: the world boxes of bodies and partners against the neighbour list (a Verlet list of the
 //      pairs whose boxes, grown by half the skin, overlapped when it was built; rebuilt by sweep and prune
 //      when a box leaves its grown box) -> data.pairs, the pairs whose bounds overlap now, each with a
-//      rounded body on its first side (partners never touch each other here, nor members of one clump);
+//      rounded body on its first side, or a sphere body when both sides are partners (other partners never
+//      touch each other here, nor members of one clump);
 //   2. resolvePair for every pair, in parallel, in the rounded body's frame: the pair's candidate triangle
 //      pairs (kept between steps, rebuilt from the triangle trees when the relative motion exceeds the skin)
 //      -> Ig2 (triangle contact geometry) -> Law2 (normal load, Eqs. 12-14; friction, Eqs. 19-21) -> node
@@ -37,6 +38,14 @@ struct TriangleContact {
   std::array<Real, 3> partnerNodeForces;  // on body 2's triangle's corners, along n12, when it is a mesh
 };
 
+// Velocity of body 2's material relative to body 1's, in body 1's frame (toBody: global -> body 1's axes),
+// about body 1's position.
+RelativeMotion relativeMotion(const BodyState& s1, const BodyState& s2, const Matrix3r& toBody);
+
+// The other side's wrench when `onBody` (torque about bodyPosition) acts on the body: the opposite forces at the
+// same points, torque about otherPosition (Eq. 22).
+Wrench reaction(const Wrench& onBody, const Vector3r& bodyPosition, const Vector3r& otherPosition);
+
 // Stage 2, geometry, for one pair (Ig2 in the body's frame): its triangle contacts -> geoms, the funnel's
 // counts -> statistics. `candidates`: as for resolvePair.
 void pairGeometry(const ContactModel& model, const ContactData& data, const BodyPair& pair,
@@ -47,7 +56,7 @@ void pairGeometry(const ContactModel& model, const ContactData& data, const Body
 PairResult pairLoad(const ContactModel& model, const ContactData& data, const BodyPair& pair,
                     const std::vector<PressureGeom>& geoms, std::vector<TriangleContact>* contacts = nullptr);
 
-// Stage 2 for one pair: pairGeometry, then pairLoad. `candidates`: the pair's list kept between steps,
+// Stage 2 for one pair: pairGeometry, then pairLoad; for a sphere body against a partner, resolveSpherePair. `candidates`: the pair's list kept between steps,
 // brought up to date here; without it, the candidate triangle pairs are found afresh, for contacts up to kDeepestOverlap of the smaller body
 // deep. With `contacts`, also appends every triangle contact of the pair.
 PairResult resolvePair(const ContactModel& model, const ContactData& data, const BodyPair& pair,

@@ -14,4 +14,11 @@ struct Facet {
   std::array<Vector3r, 3> vertices;
 };
 
+// The facet's corners placed by its body's position and orientation [m].
+inline std::array<Vector3r, 3> facetCorners(const Facet& facet, const Vector3r& position, const Quaternionr& orientation) {
+  std::array<Vector3r, 3> corners;
+  for (int i = 0; i < 3; ++i) corners[i] = position + orientation * facet.vertices[i];
+  return corners;
+}
+
 }  // namespace roundedmesh

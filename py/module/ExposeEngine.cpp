@@ -47,6 +47,11 @@ class Engine {
     const int id = bp::extract<int>(body.attr("id"));
     model_.partners.push_back({id, yadeShape(body, id), material});
   }
+  // A sphere body (rm.add_sphere): a YADE Sphere whose contacts with every partner the engine computes too.
+  void addSphere(const bp::object& body, const HertzMaterial& material) {
+    const int id = bp::extract<int>(body.attr("id"));
+    model_.partners.push_back({id, sphereShape(body, id), material, true});
+  }
   void setOptions(Real gamma, const std::string& regime) { model_.pressure = pressureOptions(gamma, regime); }
 
   // One contact step on the current YADE scene; returns the ids of managed bodies that have left it (and
@@ -71,9 +76,7 @@ class Engine {
     const StabilityLimit limit = roundedmesh::stabilityLimit(model_, toReals(bodyMasses, model_.bodies.size()),
                                                              toReals(partnerMasses, model_.partners.size()));
     if (limit.body < 0) return bp::make_tuple(limit.timeStep, -1, -1);
-    const int bodyCount = static_cast<int>(model_.bodies.size());
-    const int other = limit.other < bodyCount ? model_.bodies[limit.other].id : model_.partners[limit.other - bodyCount].id;
-    return bp::make_tuple(limit.timeStep, model_.bodies[limit.body].id, other);
+    return bp::make_tuple(limit.timeStep, yadeId(limit.body), yadeId(limit.other));
   }
 
   bp::dict statistics() const {
@@ -90,6 +93,7 @@ class Engine {
     s["rejected_through_body"] = c.narrowPhase.throughBody;
     s["quadrature_contacts"] = c.quadratureContacts;
     s["direct_contacts"] = c.directContacts;
+  s["sphere_contacts"] = c.sphereContacts;
     s["sliding_contacts"] = c.slidingContacts;
     s["neighbour_rebuilds"] = c.neighbourRebuilds;
     s["candidate_rebuilds"] = c.candidateRebuilds;
@@ -103,6 +107,12 @@ class Engine {
   }
 
  private:
+  // YADE's id of an engine index (bodies, then partners).
+  int yadeId(int index) const {
+    const int bodyCount = static_cast<int>(model_.bodies.size());
+    return index < bodyCount ? model_.bodies[index].id : model_.partners[index - bodyCount].id;
+  }
+
   ContactModel model_;
   ContactData data_;
   Real readMs_ = 0, writeMs_ = 0;  // the bridge's share of the last step: states in, wrenches out
@@ -204,6 +214,7 @@ void exposeEngine() {
   bp::class_<Engine, boost::noncopyable>("Engine", "Contact engine state of one scene (used by roundedmesh.scene).")
       .def("add_body", &Engine::addBody, (bp::arg("id"), bp::arg("mesh"), bp::arg("material")))
       .def("add_partner", &Engine::addPartner, (bp::arg("body"), bp::arg("material")))
+      .def("add_sphere", &Engine::addSphere, (bp::arg("body"), bp::arg("material")))
       .def("set_options", &Engine::setOptions, (bp::arg("gamma"), bp::arg("regime")))
       .def("step", &Engine::step, bp::arg("O"))
       .def("stability_limit", &Engine::stabilityLimit, (bp::arg("body_masses"), bp::arg("partner_masses")))

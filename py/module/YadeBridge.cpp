@@ -1,5 +1,6 @@
 #include "py/module/YadeBridge.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -36,17 +37,18 @@ void readState(const bp::object& body, int id, BodyState& state, int& clump) {
                                 "it); reduce O.dt or fix the state");
 }
 
-// A rounded body's YADE material is the plain Material add_body gave it (label "roundedmesh"); one replaced by
-// hand would go on with the HertzMaterial the engine knows, silently: refuse the step instead.
-void requireOwnMaterial(const bp::object& body, int id) {
+// A rounded or sphere body's YADE material is the plain Material add_body or add_sphere gave it (label
+// "roundedmesh"); one replaced by hand would go on with the HertzMaterial the engine knows, silently: refuse the
+// step instead.
+void requireOwnMaterial(const bp::object& body, int id, const char* kind) {
   const bp::object material = body.attr("material");
   if (!material.is_none() && bp::extract<std::string>(material.attr("label"))() == "roundedmesh") return;
   const std::string found =
       material.is_none() ? "removed"
                          : "replaced by a " + bp::extract<std::string>(material.attr("__class__").attr("__name__"))() +
                                " (label " + bp::extract<std::string>(material.attr("label").attr("__repr__")())() + ")";
-  throw std::invalid_argument("rounded body " + std::to_string(id) + ": its YADE material was " + found +
-                              "; a rounded body's contact material is a roundedmesh.HertzMaterial, changed with "
+  throw std::invalid_argument(std::string(kind) + " body " + std::to_string(id) + ": its YADE material was " + found +
+                              "; a " + kind + " body's contact material is a roundedmesh.HertzMaterial, changed with "
                               "roundedmesh.set_material(" + std::to_string(id) + ", material)");
 }
 
@@ -66,6 +68,16 @@ PartnerShape yadeShape(const bp::object& body, int id) {
                               " cannot be a roundedmesh contact partner; Walls, Boxes, Facets and Spheres can");
 }
 
+Sphere sphereShape(const bp::object& body, int id) {
+  const PartnerShape shape = yadeShape(body, id);
+  const Sphere* sphere = std::get_if<Sphere>(&shape);
+  if (!sphere) throw std::invalid_argument("sphere body " + std::to_string(id) + ": its YADE shape is no longer a Sphere");
+  if (!(std::isfinite(sphere->radius) && sphere->radius > 0))
+    throw std::invalid_argument("sphere body " + std::to_string(id) + ": its radius " + std::to_string(sphere->radius) +
+                                " is not positive and finite");
+  return *sphere;
+}
+
 std::vector<int> readScene(const bp::object& omega, ContactModel& model, ContactData& data) {
   const bp::object bodies = omega.attr("bodies");
   std::vector<int> missing;
@@ -76,7 +88,7 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
       missing.push_back(model.bodies[b].id);
       continue;
     }
-    requireOwnMaterial(body, model.bodies[b].id);
+    requireOwnMaterial(body, model.bodies[b].id, "rounded");
     readState(body, model.bodies[b].id, data.bodyStates[b], data.bodyClumps[b]);
   }
   for (size_t p = 0; p < model.partners.size(); ++p) {
@@ -87,7 +99,12 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
       continue;
     }
     readState(body, partner.id, data.partnerStates[p], data.partnerClumps[p]);
-    partner.shape = yadeShape(body, partner.id);
+    if (partner.sphereBody) {
+      requireOwnMaterial(body, partner.id, "sphere");
+      partner.shape = sphereShape(body, partner.id);
+    } else {
+      partner.shape = yadeShape(body, partner.id);
+    }
   }
   return missing;
 }

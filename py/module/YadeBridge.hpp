@@ -15,7 +15,7 @@ namespace bp = boost::python;
 // Fills data.bodyStates, data.partnerStates and their clumps, and refreshes the partners' shapes from their
 // YADE shapes. Returns the ids of managed bodies that are no longer in the scene; when any is missing, the
 // states are incomplete and must not be used. Throws std::invalid_argument naming the body if a state is not
-// finite or a rounded body's YADE material was replaced.
+// finite, a rounded or sphere body's YADE material was replaced, or a sphere body's shape is no longer a Sphere.
 std::vector<int> readScene(const bp::object& omega, ContactModel& model, ContactData& data);
 
 // Adds every non-zero wrench of `data` to YADE's force container (O.forces.addF / addT).
@@ -24,5 +24,9 @@ void applyWrenches(const bp::object& omega, const ContactModel& model, const Con
 // The partner's shape as YADE has it now: a Wall, Box, Facet or Sphere. Throws std::invalid_argument for any
 // other.
 PartnerShape yadeShape(const bp::object& body, int id);
+
+// A sphere body's shape: its YADE Sphere. Throws std::invalid_argument naming the body if it is no Sphere (or a
+// radius that is not positive and finite).
+Sphere sphereShape(const bp::object& body, int id);
 
 }  // namespace roundedmesh::python

@@ -4,13 +4,16 @@ adds their contact forces each step.
 A rounded body is an ordinary YADE Body with a bare Shape and no bound, which YADE's colliders and
 dispatchers skip: YADE owns its mass, inertia, position, orientation and velocities and moves it with
 NewtonIntegrator (also as a member of a clump); this module owns its mesh and material. YADE Walls, Boxes,
-Facets and Spheres become contact partners when given a HertzMaterial with assign_material.
+Facets and Spheres become contact partners when given a HertzMaterial with assign_material. A sphere body
+(add_sphere) is a YADE Sphere that YADE's collider never pairs (groupMask 0): every contact it has, also with
+the other partners, is this module's.
 
 What this module knows about a scene is kept in the scene, in O.tags, so that O.save/O.load,
 O.saveTmp/O.loadTmp and the GUI's reload keep the rounded bodies:
     roundedmesh.mesh.<key>     one record per distinct mesh
     roundedmesh.body.<id>      a rounded body: its mesh key and material
     roundedmesh.partner.<id>   a contact partner: its material
+    roundedmesh.sphere.<id>    a sphere body: its material
     roundedmesh.revision       changes with every edit; the engine rebuilds its state when it differs
 YADE cannot delete a tag; an entry set to "" is a deleted one.
 """
@@ -27,6 +30,7 @@ import weakref
 
 import numpy as np
 from yade import Body, ForceResetter, Material, NewtonIntegrator, O, PyRunner, Shape
+from yade import Sphere as YadeSphere
 from yade.minieigenHP import Quaternion, Vector3
 
 from ._core import Engine, HertzMaterial, Mesh, partner_kind
@@ -176,13 +180,21 @@ def _materials(kind):
             for i, r in _tags_named(kind).items()}
 
 
-def _require_one_deformable(material, others, name, other_kind, exclude=None):
+_ALL_KINDS = ("body", "sphere", "partner")
+
+
+def _require_one_deformable(material, others, name, other_kind=None, exclude=None):
     """Two rigid bodies (young = inf) have no Hertz contact: refuse a rigid material if a rigid one is
-    already among those it can touch (`others`: 'body', 'partner' or both; body `exclude` is the one whose
-    material changes)."""
+    already among those it can touch (`others`: among 'body', 'sphere', 'partner'; body `exclude` is the one
+    whose material changes). `other_kind` names them in the message; without it, the kinds of the rigid ones
+    found (rounded and sphere bodies)."""
     if math.isinf(material.young):
-        rigid = sorted(i for kind in others for i, m in _materials(kind).items()
-                       if math.isinf(m.young) and i != exclude)
+        found = {kind: sorted(i for i, m in _materials(kind).items() if math.isinf(m.young) and i != exclude)
+                 for kind in others}
+        rigid = sorted(i for ids in found.values() for i in ids)
+        if other_kind is None:
+            other_kind = " or ".join(word for kind, word in (("body", "rounded"), ("sphere", "sphere"))
+                                     if found.get(kind)) + " bod(ies)"
         if rigid:
             raise ValueError(f"{name}: a rigid material (young=inf) cannot touch the rigid {other_kind} "
                              f"{', '.join(map(str, rigid))}; give one side a finite modulus")
@@ -202,6 +214,20 @@ def _set_mass(body, mesh, material):
     body.state.inertia = Vector3(*(material.density * mesh.inertia))
 
 
+def _set_sphere_mass(body, material):
+    radius = body.shape.radius
+    body.state.mass = material.density * 4 / 3 * math.pi * radius ** 3
+    body.state.inertia = Vector3(*[0.4 * body.state.mass * radius ** 2] * 3)
+
+
+def _positive_length(value, name):
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name}: expected a number, got {value!r}")
+    if not (math.isfinite(value) and value > 0):
+        raise ValueError(f"{name}: must be positive and finite, got {value!r}")
+    return float(value)
+
+
 # --- the public API ---------------------------------------------------------------------------------------
 
 def add_body(mesh, pos, ori=Quaternion.Identity, material=None):
@@ -213,7 +239,7 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None):
     pos = _finite_vector(pos, "pos")
     ori = _rotation(ori, "ori")
     material = _require_material(material, "material")
-    _require_one_deformable(material, ("body", "partner"), "material", "bod(ies)")
+    _require_one_deformable(material, _ALL_KINDS, "material", "bod(ies)")
 
     body = Body()
     # O.bodies.clump needs a shape and a material on every member (it dereferences both, then uses the
@@ -237,46 +263,76 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None):
     return body_id
 
 
+def add_sphere(pos, radius, material, ori=Quaternion.Identity):
+    """Adds a sphere body: a YADE Sphere of `radius` [m] centred at `pos` [m], turned by `ori`, made of `material`
+    (a HertzMaterial), whose every contact the roundedmesh engine computes with the law of the rounded bodies
+    (the damped Hertz force of Eq. 7 and the Coulomb friction of Eqs. 19-21): with other sphere bodies, with
+    rounded bodies, and with the contact partners (Walls, Boxes, Facets, partner Spheres). Mass and inertia
+    come from the material's density. YADE's collider never pairs it (groupMask 0), so YADE's own contact laws
+    never add to it. Returns the new body's id. On bad input nothing is added."""
+    pos = _finite_vector(pos, "pos")
+    radius = _positive_length(radius, "radius")
+    material = _require_material(material, "material")
+    ori = _rotation(ori, "ori")
+    _require_one_deformable(material, _ALL_KINDS, "material", "bod(ies)")
+
+    body = Body()
+    body.shape = YadeSphere(radius=radius)
+    body.material = _yade_material(material)
+    body.groupMask = 0
+    _set_sphere_mass(body, material)
+    body.state.pos = pos
+    body.state.ori = ori
+    body_id = O.bodies.append(body)
+    _set_tag(f"sphere.{body_id}", json.dumps(_material_record(material)))
+    _new_revision()
+    return body_id
+
+
 def assign_material(body_id, material):
     """Makes the YADE-native body `body_id` (a Wall, Box, Facet or Sphere) a contact partner of the rounded
-    bodies, made of `material`. Assigning again replaces the material, and a rounded body's material is
-    changed as by set_material. Partners touch rounded bodies only: contacts among them stay with YADE's own
+    bodies, made of `material`. Assigning again replaces the material, and a rounded or sphere body's
+    material is changed as by set_material. Partners touch rounded bodies only: contacts among them stay with YADE's own
     engines, if the scene has any."""
     material = _require_material(material, "material")
     body = _existing_body(body_id, "body_id")
-    if _tag(f"body.{body.id}"):
+    if _tag(f"body.{body.id}") or _tag(f"sphere.{body.id}"):
         return set_material(body.id, material)
     partner_kind(body)
-    _require_one_deformable(material, ("body",), "material", "rounded bod(ies)")
+    _require_one_deformable(material, ("body", "sphere"), "material")
     _set_tag(f"partner.{body.id}", json.dumps(_material_record(material)))
     _new_revision()
 
 
 def set_material(body_id, material):
-    """Gives the rounded body or contact partner `body_id` the HertzMaterial `material` from the next step
-    on, e.g. friction after settling without it. A rounded body's mass and inertia follow the new density
-    (refused for a clump member, whose mass is part of its clump's); a partner's mass stays YADE's. On bad
-    input nothing changes."""
+    """Gives the rounded body, sphere body or contact partner `body_id` the HertzMaterial `material` from the
+    next step on, e.g. friction after settling without it. A rounded or sphere body's mass and inertia follow
+    the new density (refused for a clump member, whose mass is part of its clump's); a partner's mass stays
+    YADE's. On bad input nothing changes."""
     material = _require_material(material, "material")
     body = _existing_body(body_id, "body_id")
-    record = _tag(f"body.{body.id}")
-    if record:
-        r = json.loads(record)
+    record, sphere = _tag(f"body.{body.id}"), _tag(f"sphere.{body.id}")
+    if record or sphere:
+        r = json.loads(record) if record else {"material": json.loads(sphere)}
         if material.density != r["material"][2] and body.isClumpMember:
             raise ValueError(f"material: body {body.id} is a member of clump {body.clumpId}, whose mass and inertia "
                              f"were fixed by O.bodies.clump; a new density ({material.density:g} instead of "
                              f"{r['material'][2]:g} kg/m^3) must be given before clumping")
-        _require_one_deformable(material, ("body", "partner"), "material", "bod(ies)", exclude=body.id)
+        _require_one_deformable(material, _ALL_KINDS, "material", "bod(ies)", exclude=body.id)
         body.material = _yade_material(material)
-        if material.density != r["material"][2]:
-            _set_mass(body, _load_mesh(r["mesh"]), material)
-        _set_tag(f"body.{body.id}", json.dumps({**r, "material": _material_record(material)}))
+        if record:
+            if material.density != r["material"][2]:
+                _set_mass(body, _load_mesh(r["mesh"]), material)
+            _set_tag(f"body.{body.id}", json.dumps({**r, "material": _material_record(material)}))
+        else:
+            _set_sphere_mass(body, material)
+            _set_tag(f"sphere.{body.id}", json.dumps(_material_record(material)))
     elif _tag(f"partner.{body.id}"):
-        _require_one_deformable(material, ("body",), "material", "rounded bod(ies)")
+        _require_one_deformable(material, ("body", "sphere"), "material")
         _set_tag(f"partner.{body.id}", json.dumps(_material_record(material)))
     else:
-        raise ValueError(f"body_id: body {body.id} is neither a rounded body nor a contact partner; "
-                         "make a Wall, Box, Facet or Sphere a partner with assign_material")
+        raise ValueError(f"body_id: body {body.id} is neither a rounded body nor a contact partner nor a "
+                         "sphere body; make a Wall, Box, Facet or Sphere a partner with assign_material")
     _new_revision()
 
 
@@ -302,8 +358,8 @@ def engine(label="", **options):
 
 
 def critical_timestep():
-    """Largest stable O.dt for the current scene's contacts between rounded bodies and partners [s], inf if
-    there are none (see doc/physics.md, "Time step"). Use a fraction of it for accuracy."""
+    """Largest stable O.dt for the current scene's contacts of rounded bodies and sphere bodies with each other
+    and with partners [s], inf if there are none (see doc/physics.md, "Time step"). Use a fraction of it for accuracy."""
     state = _current_state()
     return state.stability()[0] if state else math.inf
 
@@ -311,23 +367,26 @@ def critical_timestep():
 _STATISTICS = ("body_pairs", "touching_pairs", "candidates", "rejected_not_facing", "rejected_no_overlap",
                "rejected_outside_circle", "rejected_empty_polygon", "rejected_beyond_contact_circle",
                "rejected_through_body",
-               "quadrature_contacts", "direct_contacts", "sliding_contacts", "neighbour_rebuilds",
+               "quadrature_contacts", "direct_contacts", "sphere_contacts", "sliding_contacts", "neighbour_rebuilds",
                "candidate_rebuilds", "near_rebuilds", "broad_phase_ms", "pairs_ms", "reduction_ms", "read_ms",
                "write_ms")
 
 
 def statistics():
     """The last contact step, stage by stage (doc/architecture.md):
-      body_pairs               pairs whose bounds overlapped (the broad phase's output)
-      touching_pairs           of those, pairs with at least one triangle contact
+      body_pairs               pairs whose bounds overlapped (the broad phase's output), sphere bodies' included
+      touching_pairs           of those, pairs with at least one triangle contact or a sphere contact
       candidates               triangle pairs (and triangle-partner pairs) put through the narrow phase
       rejected_*               how many of them each test rejected, in the order they run (Appendix B):
                                not_facing (Eq. B.5), no_overlap (Eq. 10), outside_circle (projected
                                circumcircle against the contact circle), empty_polygon (S), beyond_contact_circle,
                                through_body (a pair deeper than 0.1 r_eq whose caps do not reach into the other
                                body: doc/physics.md, "Which triangle pairs touch")
-      quadrature_contacts, direct_contacts   triangle contacts in each regime of Eq. 14
-      sliding_contacts         triangle contacts sliding (Eq. 21)
+      quadrature_contacts, direct_contacts   triangle contacts in each regime of Eq. 14 (a sphere body against a
+                               rounded body counts here: the rounded body's triangles meet the sphere)
+      sphere_contacts          contacts of a sphere body with another sphere body or a partner, one per pair
+                               (the whole contact circle: no triangles, so not in candidates or rejected_*)
+      sliding_contacts         triangle and sphere contacts sliding (Eq. 21)
       neighbour_rebuilds       whether the broad phase's neighbour list was rebuilt (0 or 1)
       candidate_rebuilds       pairs whose candidate triangle pairs were rebuilt (from their near list)
       near_rebuilds            pairs whose near list was searched again in the triangle trees
@@ -341,6 +400,12 @@ def statistics():
 def rounded_bodies():
     """{body id: Mesh} of the current scene's rounded bodies."""
     return {int(i): _load_mesh(json.loads(record)["mesh"]) for i, record in _tags_named("body").items()
+            if _body_or_none(int(i)) is not None}
+
+
+def sphere_bodies():
+    """{body id: radius [m]} of the current scene's sphere bodies (add_sphere)."""
+    return {int(i): _body_or_none(int(i)).shape.radius for i in _tags_named("sphere")
             if _body_or_none(int(i)) is not None}
 
 
@@ -361,12 +426,13 @@ class _SceneState:
             materials.append(HertzMaterial(*r["material"]))
             self.engine.add_body(int(body_id), mesh, materials[-1])
             self.body_ids.append(int(body_id))
-        for body_id, record in sorted(_tags_named("partner").items(), key=lambda item: int(item[0])):
-            body = _body_or_none(int(body_id))
+        partners = [(int(i), r, kind) for kind in ("sphere", "partner") for i, r in _tags_named(kind).items()]
+        for body_id, record, kind in sorted(partners):
+            body = _body_or_none(body_id)
             if body is not None:
                 materials.append(HertzMaterial(*json.loads(record)))
-                self.engine.add_partner(body, materials[-1])
-                self.partner_ids.append(int(body_id))
+                (self.engine.add_sphere if kind == "sphere" else self.engine.add_partner)(body, materials[-1])
+                self.partner_ids.append(body_id)
         for m in materials:
             if m.friction > 0 and m.tangential_damping == 0 and not any(o.tangential_damping > 0 for o in materials):
                 warnings.warn(f"roundedmesh: friction={m.friction:g} with tangential_damping=0 on every material: "
@@ -393,8 +459,9 @@ class _SceneState:
             limit, body, other = self.stability()
             if O.dt > limit:
                 raise ValueError(
-                    f"O.dt = {O.dt:g} s is above the stability limit {limit:g} s of the contact between rounded "
-                    f"body {body} and body {other} (roundedmesh.critical_timestep()); reduce O.dt")
+                    f"O.dt = {O.dt:g} s is above the stability limit {limit:g} s of the contact between "
+                    f"{'rounded' if body in self.body_ids else 'sphere'} body {body} and body {other} "
+                    "(roundedmesh.critical_timestep()); reduce O.dt")
             self.checked_dt = O.dt
 
 
@@ -431,6 +498,7 @@ def _forget(body_ids):
     for body_id in body_ids:
         _set_tag(f"body.{body_id}", "")
         _set_tag(f"partner.{body_id}", "")
+        _set_tag(f"sphere.{body_id}", "")
     _new_revision()
 
 

@@ -1,0 +1,56 @@
+#include "pkg/engine/SpherePair.hpp"
+
+#include "pkg/common/Overloaded.hpp"
+#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/geom/Ig2_Sphere_Partner_PressureGeom.hpp"
+#include "pkg/phys/HertzPhys.hpp"
+
+namespace roundedmesh {
+
+PairResult resolveSpherePair(const ContactModel& model, const ContactData& data, const BodyPair& pair) {
+  const int bodyCount = static_cast<int>(model.bodies.size());
+  const Partner& sphere = model.partners[pair.body - bodyCount];
+  const Partner& other = model.partners[pair.other - bodyCount];
+  const BodyState& s1 = data.state(pair.body);
+  const BodyState& s2 = data.state(pair.other);
+  const Real radius = std::get<Sphere>(sphere.shape).radius;
+  // The sphere's frame: origin at its centre, global axes (a sphere's orientation does not change its contacts).
+  const RelativeMotion motion = relativeMotion(s1, s2, Matrix3r::Identity());
+  auto local = [&](const Vector3r& x) -> Vector3r { return x - s1.position; };
+  PressureGeom geom;
+  const GeomTest found = std::visit(
+      Overloaded{[&](const Sphere& s) { return sphereSphereGeom(radius, local(s2.position), s.radius, motion, geom); },
+                 [&](const Plane& p) { return spherePlaneGeom(radius, {local(p.point), p.normal}, motion, geom); },
+                 [&](const Wall& w) {
+                   const Plane p = wallPlane(w, s2.position, s1.position);
+                   return spherePlaneGeom(radius, {local(p.point), p.normal}, motion, geom);
+                 },
+                 [&](const Box& b) {
+                   return spherePlaneGeom(radius, boxPlane(b, local(s2.position), s2.orientation.toRotationMatrix()),
+                                          motion, geom);
+                 },
+                 [&](const Facet& f) {
+                   std::array<Vector3r, 3> corners = facetCorners(f, s2.position, s2.orientation);
+                   for (Vector3r& x : corners) x = local(x);
+                   return spherePlaneGeom(radius, facetPlane(corners), motion, geom);
+                 }},
+      other.shape);
+  PairResult result;
+  result.statistics.bodyPairs = 1;
+  if (!found) return result;
+  result.statistics.touchingPairs = 1;
+  result.statistics.sphereContacts = 1;
+  const HertzPhys phys = Ip2_HertzMaterial_HertzMaterial_HertzPhys(sphere.material, other.material);
+  PressureOptions whole = model.pressure;
+  whole.regime = RegimeChoice::Direct;
+  const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, whole);
+  const TangentialLoad friction = coulombFriction(geom, load, phys);
+  result.statistics.slidingContacts = friction.sliding;
+  // The normal force acts along the line of centres (c lies on it) and has no moment about the sphere's centre.
+  result.onBody.force = -load.force * geom.normal - friction.force;
+  result.onBody.torque = planePoint(geom, geom.effectivePoint).cross(-friction.force);
+  result.onOther = reaction(result.onBody, s1.position, s2.position);
+  return result;
+}
+
+}  // namespace roundedmesh
