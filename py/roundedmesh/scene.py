@@ -432,7 +432,6 @@ class _SceneState:
         self.options = None
         self.checked_dt = None
         self.stepped_iteration = None  # O.iter of the last step computed; None before the first
-        self.keep_triangle_contacts = False
 
     def stability(self):
         """(limit [s], body id, id of the other body) for the masses the bodies have in YADE now. A body erased since
@@ -549,7 +548,7 @@ def step(**options):
     if state is None:
         return
     state.prepare(options)
-    state.engine.keep_triangle_contacts = _keep_triangle_forces
+    state.engine.keep_triangle_contacts = _keeps_triangle_forces()
     missing = state.engine.step(O)
     if missing:  # bodies erased from the scene leave the engine too
         _forget(missing)
@@ -610,14 +609,14 @@ def _warn_deep_overlaps(state):
                   "Move the bodies apart before the run", RuntimeWarning)
 
 
-_keep_triangle_forces = False
-
-
 def keep_triangle_forces(keep=True):
-    """From the next step on, keep the contact force of every triangle (triangle_forces(); the export's cell
-    data). Off by default: it copies every triangle contact each step."""
-    global _keep_triangle_forces
-    _keep_triangle_forces = bool(keep)
+    """From the next step on, keep the contact force of every triangle of the current scene (triangle_forces(),
+    the export's cell data). Off by default: it copies every triangle contact each step. Kept in O.tags."""
+    _set_tag("triangle_forces", "1" if keep else "")
+
+
+def _keeps_triangle_forces():
+    return bool(_tag("triangle_forces"))
 
 
 def triangle_forces():
@@ -626,7 +625,7 @@ def triangle_forces():
     {} before the first step. None if they are not kept (keep_triangle_forces() was off for the last step)."""
     state = _current_state()
     if state is None or state.stepped_iteration is None:
-        return {} if _keep_triangle_forces else None
+        return {} if _keeps_triangle_forces() else None
     if not state.engine.keep_triangle_contacts:
         return None
     return {int(i): f for i, f in state.engine.triangle_forces().items()}
