@@ -9,6 +9,7 @@ from yade import ForceResetter, NewtonIntegrator, O, PyRunner, utils
 from yade.minieigenHP import Quaternion, Vector3
 
 import roundedmesh as rm
+from conftest import open_box
 
 RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-2, friction=0.3, tangential_damping=20)
 STEEL = rm.HertzMaterial(young=2e11, poisson=0.3, density=7800, damping=1e-2, friction=0.3, tangential_damping=20)
@@ -35,13 +36,9 @@ def bodies_in_a_box(steps):
     bodies = [rm.add_body(icosphere, pos=(x, 0.004 * x / 0.02, 0.021 + 0.038 * i), material=RUBBER)
               for i, x in enumerate((0.0, 0.012, -0.01))]
     bodies.append(rm.add_body(bear, pos=(0.005, 0.0, 0.16), material=RUBBER))
-    walls = [O.bodies.append(utils.wall(0, axis=2, sense=1))]
-    for axis in (0, 1):
-        for side, sense in ((-0.06, 1), (0.06, -1)):
-            walls.append(O.bodies.append(utils.wall(side, axis=axis, sense=sense)))
-    for wall in walls:
-        rm.assign_material(wall, STEEL)
-    O.engines = [ForceResetter(), PyRunner(command=f"__import__('sys').modules[{__name__!r}].record_states()", iterPeriod=1, initRun=True),
+    walls = open_box(0.06, STEEL)
+    recorder = PyRunner(command=f"__import__('sys').modules[{__name__!r}].record_states()", iterPeriod=1, initRun=True)
+    O.engines = [ForceResetter(), recorder,
                  rm.engine(), NewtonIntegrator(gravity=GRAVITY, damping=0)]
     O.dt = 0.2 * rm.critical_timestep()
     O.run(steps, True)

@@ -9,6 +9,7 @@ from yade import (Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter, Ig2_Sphere_Sphe
 from yade.minieigenHP import Quaternion, Vector3
 
 import roundedmesh as rm
+from conftest import open_box
 
 RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-2)
 STEEL = rm.HertzMaterial(young=2e11, poisson=0.3, density=7800, damping=1e-2)
@@ -71,12 +72,7 @@ def test_falls_below_a_hundredth_as_a_packing_settles():
     for i in range(6):
         rm.add_body(balls, pos=(0.006 * (i % 2) - 0.003, 0.004 * (i % 3) - 0.004, 0.012 + 0.022 * i),
                     material=RUBBER)
-    walls = [O.bodies.append(utils.wall(0, axis=2, sense=1))]
-    for axis in (0, 1):
-        for side, sense in ((-0.02, 1), (0.02, -1)):
-            walls.append(O.bodies.append(utils.wall(side, axis=axis, sense=sense)))
-    for wall in walls:
-        rm.assign_material(wall, STEEL)
+    open_box(0.02, STEEL)
     O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=GRAVITY, damping=0)]
     O.dt = 0.2 * rm.critical_timestep()
     while len(rm.contacts()["id1"]) < 6:  # until the balls have landed
