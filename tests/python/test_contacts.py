@@ -145,7 +145,7 @@ def held_on_a_wall(mesh, pos, ori=Quaternion.Identity, material=RUBBER, vel=(0, 
     return ball, wall
 
 
-def test_a_sphere_on_a_wall_overlap_normal_and_centre_of_pressure():
+def test_a_sphere_on_a_wall_overlap_normal_and_count():
     # An icosphere with exact curvature: every triangle has the sphere's centre and radius, so the triangle
     # containing the lowest point has delta_eff = delta_s = the overlap given.
     overlap = 7e-4
