@@ -5,11 +5,13 @@
 // triangle pairs (both Verlet lists, rebuilt only when the motion since their build exceeds their skin).
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "pkg/engine/BodyState.hpp"
 #include "pkg/engine/ContactModel.hpp"
 #include "pkg/geom/PressureGeom.hpp"
+#include "pkg/law/CoulombFriction.hpp"
 #include "pkg/law/NodeForces.hpp"
 
 namespace roundedmesh {
@@ -50,9 +52,45 @@ struct BodyPair {
   int neighbour = -1;
 };
 
+// One triangle contact as resolvePair saw it, in the global frame, for listings and pictures.
+struct TriangleContact {
+  PressureGeom geom;         // body 1's frame, as Ig2 made it
+  Vector3r point;            // c_eff [m]
+  Vector3r normal;           // n12
+  NormalLoad load;           // Fn [N] on body 2 along n12
+  TangentialLoad friction;   // F_t [N] on body 2, global frame
+  std::array<Real, 3> nodeForces;         // Eq. 15 on body 1's triangle corners, along -n12 [N]
+  std::array<Real, 3> partnerNodeForces;  // on body 2's triangle's corners, along n12, when it is a mesh
+};
+
+// What one pair's triangle contacts add up to, besides the wrenches (rm.contacts(), the energies of
+// O.energy; doc/physics.md, "Energy"). Global frame.
+struct PairSummary {
+  Vector3r point = Vector3r::Zero();   // centre of pressure: the triangle contacts' points of application of their
+                                       // normal forces, weighted by those forces [m]
+  Vector3r normal = Vector3r::Zero();  // unit, along the sum of the normal forces, from the body to the other
+  Real deepestOverlap = 0;             // the largest delta_eff (Eq. B.4) [m]
+  int triangleContacts = 0;
+  bool sliding = false;                // any triangle contact sliding (Eq. 21)
+  Real elasticEnergy = 0;              // sum of (2/5) F_elastic delta_s over the triangle contacts [J]
+  Real dampingPower = 0;               // sum of (Fn - F_elastic) ddelta_s/dt: dissipated by normal damping [W]
+  Real frictionPower = 0;              // sum of -F_t . v_t: dissipated by friction [W]
+
+  // Adds one contact's overlap, sliding, elastic energy (2/5 F_elastic delta_s, doc/physics.md "Energy") and
+  // dissipated powers.
+  void add(const PressureGeom& geom, const NormalLoad& load, const TangentialLoad& friction) {
+    deepestOverlap = std::max(deepestOverlap, geom.effectiveOverlap);
+    sliding = sliding || friction.sliding;
+    elasticEnergy += 0.4 * load.elasticForce * geom.sphereOverlap;
+    dampingPower += (load.force - load.elasticForce) * geom.overlapRate;
+    frictionPower -= friction.force.dot(geom.slip);
+  }
+};
+
 // The outcome of one pair: the wrench on each side (global frame, torque about each one's position).
 struct PairResult {
   Wrench onBody, onOther;
+  PairSummary summary;
   ContactStatistics statistics;
 };
 
@@ -99,6 +137,9 @@ struct ContactData {
   std::vector<AlignedBox3r> boxes;                // scratch: the world boxes of this step
   std::vector<BodyPair> pairs;                    // pairs whose bounds overlap this step
   std::vector<PairResult> pairResults;            // one per pair
+  // Every triangle contact of each pair, kept only when asked for (for the forces per triangle of the export).
+  bool keepTriangleContacts = false;
+  std::vector<std::vector<TriangleContact>> pairContacts;
   std::vector<std::vector<PressureGeom>> geoms;   // scratch: one per thread
 
   // The state and clump of an engine index: a body's, or past them a partner's.

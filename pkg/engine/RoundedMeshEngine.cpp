@@ -298,7 +298,12 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   const HertzPhys phys = Ip2_HertzMaterial_HertzMaterial_HertzPhys(body.material, otherMaterial);
   const RoundedMesh& mesh = *body.mesh;
   PairResult result;
+  PairSummary& summary = result.summary;
   Wrench local;
+  // Sums of Fn times the point of application and along the normal, and of the unweighted ones for a pair
+  // whose normal forces are all zero (body 1's frame).
+  Vector3r moment = Vector3r::Zero(), normals = Vector3r::Zero(), points = Vector3r::Zero();
+  Real normalForce = 0;
   for (const PressureGeom& geom : geoms) {
     const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, model.pressure);
     ++(load.regime == Regime::Direct ? result.statistics.directContacts : result.statistics.quadratureContacts);
@@ -312,6 +317,12 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     if (friction.sliding) ++result.statistics.slidingContacts;
     local.force -= friction.force;
     local.torque -= point.cross(friction.force);
+    // Fn acts at c + (-Mn_y, Mn_x) / Fn (NodeForces.hpp), so Fn times that point needs no division.
+    moment += load.force * geom.centre - load.moment.y() * geom.tangent1 + load.moment.x() * geom.tangent2;
+    normalForce += load.force;
+    normals += load.force * geom.normal;
+    points += point;
+    summary.add(geom, load, friction);
     if (contacts) {
       TriangleContact& c = contacts->emplace_back();
       c.geom = geom;
@@ -322,6 +333,14 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
       c.nodeForces = forces;
       if (geom.partnerTriangle >= 0) c.partnerNodeForces = nodeForces(geom.partnerNodes, load);
     }
+  }
+  summary.triangleContacts = static_cast<int>(geoms.size());
+  if (!geoms.empty()) {
+    const bool loaded = normalForce > 0;
+    summary.point = s1.position + toGlobal * (loaded ? Vector3r(moment / normalForce) : Vector3r(points / geoms.size()));
+    if (!loaded)
+      for (const PressureGeom& geom : geoms) normals += geom.normal;
+    summary.normal = toGlobal * normals.normalized();
   }
   result.onBody.force = toGlobal * local.force;
   result.onBody.torque = toGlobal * local.torque;
@@ -349,10 +368,16 @@ void RoundedMeshEngine(const ContactModel& model, ContactData& data) {
   const double broad = omp_get_wtime();
   const int pairCount = static_cast<int>(data.pairs.size());
   data.pairResults.resize(pairCount);
+  data.pairContacts.resize(data.keepTriangleContacts ? pairCount : 0);
 #pragma omp parallel for schedule(dynamic, 4) if (pairCount > 1)
   for (int k = 0; k < pairCount; ++k) {
     const BodyPair& pair = data.pairs[k];
-    data.pairResults[k] = resolvePair(model, data, pair, data.geoms[omp_get_thread_num()], nullptr,
+    std::vector<TriangleContact>* contacts = nullptr;
+    if (data.keepTriangleContacts) {
+      contacts = &data.pairContacts[k];
+      contacts->clear();
+    }
+    data.pairResults[k] = resolvePair(model, data, pair, data.geoms[omp_get_thread_num()], contacts,
                                       &data.candidateLists[pair.neighbour]);
   }
   const double resolved = omp_get_wtime();

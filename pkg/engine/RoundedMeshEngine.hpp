@@ -17,7 +17,6 @@
 #include <vector>
 
 #include "pkg/engine/ContactData.hpp"
-#include "pkg/law/CoulombFriction.hpp"
 
 namespace roundedmesh {
 
@@ -26,17 +25,6 @@ void RoundedMeshEngine(const ContactModel& model, ContactData& data);
 // Stage 1. Conservative: a pair is left out only if no triangle's cap of the body can reach the other, or if
 // both belong to one clump.
 void broadPhase(const ContactModel& model, ContactData& data);
-
-// One triangle contact as resolvePair saw it, in the global frame, for listings and pictures.
-struct TriangleContact {
-  PressureGeom geom;         // body 1's frame, as Ig2 made it
-  Vector3r point;            // c_eff [m]
-  Vector3r normal;           // n12
-  NormalLoad load;           // Fn [N] on body 2 along n12
-  TangentialLoad friction;   // F_t [N] on body 2, global frame
-  std::array<Real, 3> nodeForces;         // Eq. 15 on body 1's triangle corners, along -n12 [N]
-  std::array<Real, 3> partnerNodeForces;  // on body 2's triangle's corners, along n12, when it is a mesh
-};
 
 // Velocity of body 2's material relative to body 1's, in body 1's frame (toBody: global -> body 1's axes),
 // about body 1's position.

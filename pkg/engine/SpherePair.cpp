@@ -46,6 +46,10 @@ PairResult resolveSpherePair(const ContactModel& model, const ContactData& data,
   const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, whole);
   const TangentialLoad friction = coulombFriction(geom, load, phys);
   result.statistics.slidingContacts = friction.sliding;
+  result.summary.add(geom, load, friction);
+  result.summary.triangleContacts = 1;  // the one contact over the whole circle
+  result.summary.point = s1.position + planePoint(geom, geom.effectivePoint);
+  result.summary.normal = geom.normal;
   // The normal force acts along the line of centres (c lies on it) and has no moment about the sphere's centre.
   result.onBody.force = -load.force * geom.normal - friction.force;
   result.onBody.torque = planePoint(geom, geom.effectivePoint).cross(-friction.force);

@@ -4,7 +4,8 @@
 //   integral over the circle = (4/3) E* sqrt(R*) (delta^3/2 + A ddelta/dt delta^1/2)   (Eq. 7)
 // The paper prints the damping term with 3 A instead of 2 A (Eq. 8), which integrates to 1.5 times the
 // damping force of Eq. 7; doc/physics.md explains the choice. The pressure never pulls: a negative
-// amplitude (fast separation) is clamped to zero.
+// amplitude (fast separation) is clamped to zero. The elastic part, (2 E* / (pi R*)) sqrt(a^2 - r^2), is the
+// pressure at ddelta/dt = 0: what the contact's elastic energy is computed from.
 #pragma once
 
 #include <algorithm>
@@ -16,20 +17,23 @@
 namespace roundedmesh {
 
 struct HertzPressure {
-  Real amplitude;        // (2 E* / pi)(1/R* + A ddelta/dt / a^2), clamped at 0 [Pa/m]
-  Real contactRadiusSq;  // a^2 [m^2]
+  Real amplitude;             // (2 E* / pi)(1/R* + A ddelta/dt / a^2), clamped at 0 [Pa/m]
+  Real contactRadiusSq;       // a^2 [m^2]
+  Real elasticAmplitude = 0;  // (2 E* / pi) / R*, the amplitude without damping [Pa/m]
 
   // Pressure at squared distance rSq from the circle's centre [Pa].
   Real at(Real rSq) const { return amplitude * std::sqrt(std::max(contactRadiusSq - rSq, Real(0))); }
+  // The integral of sqrt(a^2 - r^2) over the whole circle, (2 pi / 3) a^3 [m^3].
+  Real circleIntegral() const { return (2 * M_PI / 3) * contactRadiusSq * std::sqrt(contactRadiusSq); }
   // The pressure integrated over the whole circle: Eq. 7 [N].
-  Real totalForce() const { return amplitude * (2 * M_PI / 3) * contactRadiusSq * std::sqrt(contactRadiusSq); }
+  Real totalForce() const { return amplitude * circleIntegral(); }
 };
 
 inline HertzPressure hertzPressure(const PressureGeom& geom, const HertzPhys& phys) {
   const Real aSq = geom.contactRadius * geom.contactRadius;
   const Real amplitude =
       2 * phys.effectiveModulus / M_PI * (1 / geom.radius + phys.damping * geom.overlapRate / aSq);
-  return {std::max(amplitude, Real(0)), aSq};
+  return {std::max(amplitude, Real(0)), aSq, 2 * phys.effectiveModulus / (M_PI * geom.radius)};
 }
 
 }  // namespace roundedmesh

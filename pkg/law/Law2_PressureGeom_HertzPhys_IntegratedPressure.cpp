@@ -32,8 +32,10 @@ ConvexPolygon clippedToSquare(const ConvexPolygon& polygon, Real a) {
   return polygon;
 }
 
+// The pressure's shape sqrt(a^2 - r^2) is integrated once; the amplitudes, damped and elastic, scale it.
 NormalLoad integrateByQuadrature(const PressureGeom& geom, const HertzPressure& pressure) {
-  NormalLoad load{0, Vector2r::Zero(), Regime::Quadrature};
+  Real integral = 0;
+  Vector2r moment = Vector2r::Zero();
   // The pressure is zero outside the circle: integrating over S clipped to the circle's square gives the same
   // integral with every quadrature point where the pressure is.
   const ConvexPolygon s = clippedToSquare(geom.polygon, geom.contactRadius);
@@ -43,18 +45,20 @@ NormalLoad integrateByQuadrature(const PressureGeom& geom, const HertzPressure& 
     const Real area = 0.5 * cross2(p1 - p0, p2 - p0);
     const QuadratureColumn x = q.l1 * p0.x() + q.l2 * p1.x() + q.l3 * p2.x();
     const QuadratureColumn y = q.l1 * p0.y() + q.l2 * p1.y() + q.l3 * p2.y();
-    const QuadratureColumn dF = (area * pressure.amplitude) * q.weight *
-                                (pressure.contactRadiusSq - (x.square() + y.square())).max(Real(0)).sqrt();
-    load.force += dF.sum();
-    load.moment += leverTimesNormal(Vector2r((dF * x).sum(), (dF * y).sum()));
+    const QuadratureColumn dG =
+        area * q.weight * (pressure.contactRadiusSq - (x.square() + y.square())).max(Real(0)).sqrt();
+    integral += dG.sum();
+    moment += leverTimesNormal(Vector2r((dG * x).sum(), (dG * y).sum()));
   }
-  return load;
+  return {pressure.amplitude * integral, pressure.amplitude * moment, Regime::Quadrature,
+          pressure.elasticAmplitude * integral};
 }
 
 NormalLoad applyDirectly(const PressureGeom& geom, const HertzPressure& pressure) {
   const Real fraction = circlePolygonArea(geom.contactRadius, geom.polygon) / (M_PI * pressure.contactRadiusSq);
-  const Real force = pressure.totalForce() * fraction;
-  return {force, force * leverTimesNormal(geom.effectivePoint), Regime::Direct};
+  const Real integral = pressure.circleIntegral() * fraction;
+  const Real force = pressure.amplitude * integral;
+  return {force, force * leverTimesNormal(geom.effectivePoint), Regime::Direct, pressure.elasticAmplitude * integral};
 }
 
 }  // namespace

@@ -24,6 +24,7 @@ struct NormalLoad {
   Real force;        // Fn >= 0 along n12, acting on body 2 (body 1 receives -Fn n12) [N]
   Vector2r moment;   // Mn in plane coordinates (t1, t2): sum of r x (p dA n12) about c [N m]
   Regime regime;
+  Real elasticForce = 0;  // the undamped part of Fn: the same integral at ddelta/dt = 0 [N]; Fn - it is damping
 };
 
 NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& geom, const HertzPhys& phys,

@@ -2,6 +2,7 @@
 // sphere_contact and body_contact (pkg/engine/PairEvaluation.hpp): arguments checked and converted here.
 #include <boost/python.hpp>
 #include <chrono>
+#include <map>
 #include <cmath>
 #include <stdexcept>
 
@@ -9,6 +10,7 @@
 #include "pkg/engine/PairEvaluation.hpp"
 #include "pkg/engine/RoundedMeshEngine.hpp"
 #include "pkg/shape/BodyMesh.hpp"
+#include "py/module/NumpyConversion.hpp"
 #include "py/module/YadeBridge.hpp"
 
 namespace roundedmesh::python {
@@ -78,6 +80,80 @@ class Engine {
     if (limit.body < 0) return bp::make_tuple(limit.timeStep, -1, -1);
     return bp::make_tuple(limit.timeStep, yadeId(limit.body), yadeId(limit.other));
   }
+
+  // Every pair of the last step with at least one triangle contact, as arrays with one row per pair
+  // (roundedmesh.contacts()).
+  bp::dict contacts() const {
+    std::vector<long> id1, id2, count, sliding;
+    std::vector<Vector3r> force1, torque1, force2, torque2, point, normal;
+    std::vector<Real> overlap;
+    for (size_t k = 0; k < data_.pairs.size(); ++k) {
+      const PairResult& r = data_.pairResults[k];
+      if (r.summary.triangleContacts == 0) continue;
+      id1.push_back(yadeId(data_.pairs[k].body));
+      id2.push_back(yadeId(data_.pairs[k].other));
+      force1.push_back(r.onBody.force);
+      torque1.push_back(r.onBody.torque);
+      force2.push_back(r.onOther.force);
+      torque2.push_back(r.onOther.torque);
+      point.push_back(r.summary.point);
+      normal.push_back(r.summary.normal);
+      overlap.push_back(r.summary.deepestOverlap);
+      count.push_back(r.summary.triangleContacts);
+      sliding.push_back(r.summary.sliding);
+    }
+    bp::dict d;
+    d["id1"] = toArray(id1);
+    d["id2"] = toArray(id2);
+    d["force1"] = toArray(force1);
+    d["torque1"] = toArray(torque1);
+    d["force2"] = toArray(force2);
+    d["torque2"] = toArray(torque2);
+    d["point"] = toArray(point);
+    d["normal"] = toArray(normal);
+    d["overlap"] = toArray(overlap);
+    d["triangle_contacts"] = toArray(count);
+    d["sliding"] = toArray(sliding).astype(np::dtype::get_builtin<bool>());
+    return d;
+  }
+
+  // (elastic energy [J], power of normal damping [W], power of friction [W]) of the last step's contacts.
+  bp::tuple energy() const {
+    PairSummary total;
+    for (size_t k = 0; k < data_.pairs.size(); ++k) {
+      const PairSummary& s = data_.pairResults[k].summary;
+      total.elasticEnergy += s.elasticEnergy;
+      total.dampingPower += s.dampingPower;
+      total.frictionPower += s.frictionPower;
+    }
+    return bp::make_tuple(total.elasticEnergy, total.dampingPower, total.frictionPower);
+  }
+
+  // {YADE id: (n_triangles, 3) array} of the contact force [N] each triangle of a rounded body received in the
+  // last step, for the bodies that touched anything; empty unless keep_triangle_contacts was set before it.
+  bp::dict triangleForces() const {
+    std::map<int, std::vector<Vector3r>> forces;
+    auto add = [&](int index, int triangle, const Vector3r& force) {
+      std::vector<Vector3r>& f = forces[index];
+      if (f.empty()) f.assign(model_.bodies[index].mesh->triangles().size(), Vector3r::Zero());
+      f[triangle] += force;
+    };
+    const int bodyCount = static_cast<int>(model_.bodies.size());
+    for (size_t k = 0; k < data_.pairContacts.size(); ++k)
+      for (const TriangleContact& c : data_.pairContacts[k]) {
+        // c.load.force along n12 and c.friction.force act on the other side; the body receives the opposite.
+        const Vector3r onOther = c.load.force * c.normal + c.friction.force;
+        add(data_.pairs[k].body, c.geom.triangle, -onOther);
+        if (c.geom.partnerTriangle >= 0 && data_.pairs[k].other < bodyCount)
+          add(data_.pairs[k].other, c.geom.partnerTriangle, onOther);
+      }
+    bp::dict d;
+    for (const auto& [index, f] : forces) d[model_.bodies[index].id] = toArray(f);
+    return d;
+  }
+
+  bool keepTriangleContacts() const { return data_.keepTriangleContacts; }
+  void setKeepTriangleContacts(bool keep) { data_.keepTriangleContacts = keep; }
 
   bp::dict statistics() const {
     const ContactStatistics& c = data_.statistics;
@@ -218,7 +294,11 @@ void exposeEngine() {
       .def("set_options", &Engine::setOptions, (bp::arg("gamma"), bp::arg("regime")))
       .def("step", &Engine::step, bp::arg("O"))
       .def("stability_limit", &Engine::stabilityLimit, (bp::arg("body_masses"), bp::arg("partner_masses")))
-      .add_property("statistics", &Engine::statistics);
+      .add_property("statistics", &Engine::statistics)
+      .def("contacts", &Engine::contacts)
+      .def("energy", &Engine::energy)
+      .def("triangle_forces", &Engine::triangleForces)
+      .add_property("keep_triangle_contacts", &Engine::keepTriangleContacts, &Engine::setKeepTriangleContacts);
 
   bp::def("partner_kind", +[](const bp::object& body) {
             const int id = bp::extract<int>(body.attr("id"));

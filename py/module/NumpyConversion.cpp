@@ -94,4 +94,10 @@ np::ndarray toArray(const std::vector<Real>& values) {
   return array;
 }
 
+np::ndarray toArray(const std::vector<long>& values) {
+  np::ndarray array = np::empty(bp::make_tuple(values.size()), np::dtype::get_builtin<long>());
+  std::memcpy(array.get_data(), values.data(), values.size() * sizeof(long));
+  return array;
+}
+
 }  // namespace roundedmesh::python

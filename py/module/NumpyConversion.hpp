@@ -22,6 +22,7 @@ std::vector<Real> toPerTriangle(const bp::object& values, int triangleCount, con
 np::ndarray toArray(const std::vector<Vector3r>& points);
 np::ndarray toArray(const std::vector<Triangle>& triangles);
 np::ndarray toArray(const std::vector<Real>& values);
+np::ndarray toArray(const std::vector<long>& values);
 
 // Raises Python's ValueError with `message`.
 [[noreturn]] void raiseValueError(const std::string& message);

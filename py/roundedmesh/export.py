@@ -1,14 +1,17 @@
 """ParaView-readable export of the rounded bodies and of YADE's spheres.
 
     write_vtp(path)          one VTK XML PolyData file with every rounded body's surface in global
-                             coordinates; cell data: body id, radius of curvature [m], mean curvature [1/m]
+                             coordinates; cell data: body id, radius of curvature [m], mean curvature [1/m],
+                             and, when the last step kept them (keep_triangle_forces()), the contact force [N]
+                             each triangle received in it and its magnitude per area, contact_pressure [Pa]
     write_spheres_vtp(path)  YADE's Spheres of the scene (partners or not, clump members too) as points;
                              point data: body id, radius [m], velocity [m/s]; ParaView's Glyph filter (sphere,
                              scale by "radius", factor 2) draws them
     write_mesh_vtp(mesh, path)  one Mesh in its own (principal) frame; cell data: radius, curvature;
                              point data: node curvature computed from the mesh (Eq. 1)
     VtkSeries(directory, spheres=False)  numbered .vtp files plus a .pvd collection indexed by simulated
-                             time; call .write() when a frame is wanted, e.g. from a PyRunner. With
+                             time; call .write() when a frame is wanted, e.g. from a PyRunner (it turns
+                             keep_triangle_forces() on, so frames have the contact forces). With
                              spheres=True each frame also has the spheres, as part 1 of the collection, so that
                              ParaView shows both in one time series
 
@@ -26,6 +29,7 @@ import zlib
 import numpy as np
 from yade import O, Sphere
 
+from . import scene
 from .scene import rounded_bodies
 
 # Bytes of values per compressed block. VTK's own writers use 32 kB; bodies sharing a mesh repeat its
@@ -36,22 +40,28 @@ _TYPES = {np.dtype("<f8"): "Float64", np.dtype("<i8"): "Int64"}
 
 
 def _surfaces():
-    points, triangles, body_ids, radii, curvatures = [], [], [], [], []
+    """Points, triangles and cell data of every rounded body in global coordinates. The contact force of each
+    triangle (scene.triangle_forces()) goes with them when the engine keeps it."""
+    forces = scene.triangle_forces()
+    with_forces = forces is not None
+    points, triangles = [np.zeros((0, 3))], [np.zeros((0, 3), int)]
+    cells = {"body_id": [np.zeros(0, int)], "radius": [np.zeros(0)], "curvature": [np.zeros(0)]}
+    if with_forces:
+        cells.update(contact_force=[np.zeros((0, 3))], contact_pressure=[np.zeros(0)])
     offset = 0
     for body_id, mesh in sorted(rounded_bodies().items()):
         state = O.bodies[body_id].state
         points.append(mesh.vertices @ np.array(state.ori.toRotationMatrix()).T + np.array(state.pos))
         triangles.append(mesh.triangles + offset)
-        body_ids.append(np.full(len(mesh.triangles), body_id))
-        radii.append(mesh.radii)
-        curvatures.append(mesh.curvatures)
+        cells["body_id"].append(np.full(len(mesh.triangles), body_id))
+        cells["radius"].append(mesh.radii)
+        cells["curvature"].append(mesh.curvatures)
+        if with_forces:
+            force = forces.get(body_id, np.zeros((len(mesh.triangles), 3)))
+            cells["contact_force"].append(force)
+            cells["contact_pressure"].append(np.linalg.norm(force, axis=1) / mesh.areas)
         offset += len(mesh.vertices)
-    if not points:
-        return np.zeros((0, 3)), np.zeros((0, 3), int), {"body_id": np.zeros(0, int), "radius": np.zeros(0),
-                                                         "curvature": np.zeros(0)}
-    return np.vstack(points), np.vstack(triangles), {"body_id": np.concatenate(body_ids),
-                                                     "radius": np.concatenate(radii),
-                                                     "curvature": np.concatenate(curvatures)}
+    return np.vstack(points), np.vstack(triangles), {name: np.concatenate(v) for name, v in cells.items()}
 
 
 def _encoded(values):
@@ -101,7 +111,8 @@ def _write_polydata(path, points, triangles, cell_data, point_data=None):
             _data_array(points_element, name, values)
     cells = ElementTree.SubElement(piece, "CellData", Scalars="radius")
     for name, values in cell_data.items():
-        _data_array(cells, name, values)
+        values = np.asarray(values)
+        _data_array(cells, name, values, values.shape[1] if values.ndim == 2 else 1)
     return _write(root, path)
 
 
@@ -134,6 +145,7 @@ class VtkSeries:
     part 0, spheres as part 1."""
 
     def __init__(self, directory, prefix="rounded_bodies", spheres=False):
+        scene.keep_triangle_forces()
         self.directory = directory
         self.prefix = prefix
         self.spheres = spheres

@@ -397,6 +397,63 @@ def statistics():
     return state.engine.statistics if state else dict.fromkeys(_STATISTICS, 0)
 
 
+_NO_CONTACTS = {"id1": ((0,), int), "id2": ((0,), int), "force1": ((0, 3), float), "torque1": ((0, 3), float),
+                "force2": ((0, 3), float), "torque2": ((0, 3), float), "point": ((0, 3), float),
+                "normal": ((0, 3), float), "overlap": ((0,), float), "triangle_contacts": ((0,), int),
+                "sliding": ((0,), bool)}
+
+
+def contacts():
+    """Every pair of bodies that touched in the last contact step, as numpy arrays with one row per pair, as the
+    engine computed them (nothing is evaluated again; cheap enough for a PyRunner):
+      id1, id2            YADE ids: id1 a rounded body, id2 a rounded body or a partner
+      force1, torque1     contact force [N] and torque [N m] on id1, torque about id1's position
+      force2, torque2     the same on id2 (force2 = -force1), torque about id2's position
+      point               centre of pressure [m]: where the pair's total normal force acts (the points of
+                          application of its triangle contacts' normal forces, weighted by those forces)
+      normal              unit vector along the pair's total normal force, from id1 toward id2
+      overlap             the deepest effective overlap of its triangle contacts [m] (delta_eff, Eq. B.4)
+      triangle_contacts   number of triangle contacts (1 for a sphere body against a sphere body or a partner:
+                          one contact over the whole circle)
+      sliding             whether any of them slides (Eq. 21)
+    A pair's forces are the sums of its triangle contacts', normal and tangential (friction)."""
+    state = _current_state()
+    if state is None or state.stepped_iteration is None:
+        return {key: np.zeros(shape, dtype) for key, (shape, dtype) in _NO_CONTACTS.items()}
+    return state.engine.contacts()
+
+
+def _gravity():
+    for e in O.engines:
+        if isinstance(e, NewtonIntegrator):
+            return e.gravity
+    return Vector3.Zero
+
+
+def unbalanced_force(use_max_force=False):
+    """YADE's unbalanced force (utils.unbalancedForce) with roundedmesh's contacts counted: the mean (or, with
+    use_max_force, the largest) magnitude of the resultant force, gravity included, on the dynamic bodies that are
+    not clump members (a clump with its members' forces), divided by the mean magnitude of the contact forces:
+    roundedmesh's body pairs of the last step (the force on either side) and YADE's real interactions
+    (|normalForce + shearForce|). Call it after a step (from a PyRunner after NewtonIntegrator, or between runs);
+    nan if nothing touches."""
+    gravity = _gravity()
+    resultants = []
+    for body in O.bodies:
+        if body is None or body.isClumpMember or not body.dynamic:
+            continue
+        force = O.forces.f(body.id, sync=True)
+        if body.isClump and force.norm() == 0:  # before NewtonIntegrator has summed the members', as YADE does
+            force = sum((O.forces.f(i, sync=True) for i in body.shape.members.keys()), Vector3.Zero)
+        resultants.append((force + body.state.mass * gravity).norm())
+    contact = [(i.phys.normalForce + i.phys.shearForce).norm() for i in O.interactions
+               if i.isReal and hasattr(i.phys, "normalForce")]
+    contact.extend(np.linalg.norm(contacts()["force1"], axis=1))
+    if not resultants or not contact:
+        return math.nan
+    return (max(resultants) if use_max_force else np.mean(resultants)) / np.mean(contact)
+
+
 def rounded_bodies():
     """{body id: Mesh} of the current scene's rounded bodies."""
     return {int(i): _load_mesh(json.loads(record)["mesh"]) for i, record in _tags_named("body").items()
@@ -441,6 +498,7 @@ class _SceneState:
                 break
         self.options = None
         self.checked_dt = None
+        self.stepped_iteration = None  # O.iter of the last step computed; None before the first
 
     def stability(self):
         """(limit [s], body id, id of the other body) for the masses the bodies have in YADE now. A body erased since
@@ -559,7 +617,84 @@ def step(**options):
     if state is None:
         return
     state.prepare(options)
+    state.engine.keep_triangle_contacts = _keeps_triangle_forces()
     missing = state.engine.step(O)
     if missing:  # bodies erased from the scene leave the engine too
         _forget(missing)
         step(**options)
+        return
+    first = state.stepped_iteration is None
+    state.stepped_iteration = O.iter
+    if O.trackEnergy:
+        _track_energy(state.engine.energy())
+    if first:
+        _warn_deep_overlaps(state)
+
+
+# Energy keys in O.energy, named as YADE names its own: the elastic energy of the contacts, set every step (a state,
+# as YADE's elastPotential), and the energies dissipated by normal damping and by friction, accumulated (as
+# YADE's plastDissip and viscDamp). doc/physics.md, "Energy".
+ELASTIC_ENERGY, NORMAL_DAMPING_ENERGY, FRICTION_ENERGY = "rmElastPotential", "rmNormDamp", "rmFrictDissip"
+
+
+def _track_energy(energy):
+    elastic, damping_power, friction_power = energy
+    keys = set(O.energy.keys())
+    O.energy[ELASTIC_ENERGY] = elastic
+    for key, power in ((NORMAL_DAMPING_ENERGY, damping_power), (FRICTION_ENERGY, friction_power)):
+        O.energy[key] = (O.energy[key] if key in keys else 0.0) + power * O.dt
+
+
+# Beyond this overlap, as a fraction of the smaller volume-equivalent radius, a pair is deeper than a Hertz contact
+# is meant to reach (kDeepestOverlap in pkg/engine/ContactModel.hpp): at the start of a run it is a body placed
+# inside another, not a contact.
+DEEP_OVERLAP = 0.1
+_WARNED_PAIRS = 10
+
+
+def _equivalent_radius(volume):
+    return (3 * volume / (4 * math.pi)) ** (1 / 3)
+
+
+def _warn_deep_overlaps(state):
+    """Warns, after the first step of a scene's engine (and after every change of its bodies or partners), of the
+    pairs that overlap by more than DEEP_OVERLAP of the smaller body's volume-equivalent radius."""
+    found = contacts()
+    meshes = rounded_bodies()
+    deep = []
+    for id1, id2, overlap in zip(found["id1"], found["id2"], found["overlap"]):
+        radii = [_equivalent_radius(meshes[int(i)].volume) for i in (id1, id2) if int(i) in meshes]
+        fraction = overlap / min(radii)
+        if fraction > DEEP_OVERLAP:
+            deep.append((fraction, int(id1), int(id2), overlap))
+    if not deep:
+        return
+    deep.sort(reverse=True)
+    listed = "; ".join(f"bodies {a} and {b} by {overlap:.3g} m ({fraction:.2f} r_eq)"
+                       for fraction, a, b, overlap in deep[:_WARNED_PAIRS])
+    more = f"; and {len(deep) - _WARNED_PAIRS} more pairs" if len(deep) > _WARNED_PAIRS else ""
+    warnings.warn(f"roundedmesh: {len(deep)} pair(s) start overlapped deeper than {DEEP_OVERLAP:g} of the smaller "
+                  f"body's volume-equivalent radius r_eq, beyond what a Hertz contact describes: {listed}{more}. "
+                  "Move the bodies apart before the run", RuntimeWarning)
+
+
+def keep_triangle_forces(keep=True):
+    """From the next step on, keep the contact force of every triangle of the current scene (triangle_forces(),
+    the export's cell data). Off by default: it copies every triangle contact each step. Kept in O.tags."""
+    _set_tag("triangle_forces", "1" if keep else "")
+
+
+def _keeps_triangle_forces():
+    return bool(_tag("triangle_forces"))
+
+
+def triangle_forces():
+    """{rounded body id: (n_triangles, 3) array}: the contact force [N] on each triangle of the body in the last
+    step (the sum of its triangle contacts' normal and friction forces), for the bodies that touched anything;
+    {} before the first step. None if they are not kept (keep_triangle_forces() was off for the last step)."""
+    state = _current_state()
+    if state is None or state.stepped_iteration is None:
+        return {} if _keeps_triangle_forces() else None
+    if not state.engine.keep_triangle_contacts:
+        return None
+    return {int(i): f for i, f in state.engine.triangle_forces().items()}

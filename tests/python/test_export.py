@@ -6,6 +6,7 @@ import xml.etree.ElementTree as ElementTree
 import zlib
 
 import numpy as np
+import pytest
 from yade import O, utils
 from yade.minieigenHP import Quaternion, Vector3
 
@@ -134,3 +135,43 @@ def test_a_frame_of_s1_is_small(tmp_path):
         q.normalize()
         rm.add_body(mesh, pos=tuple(rng.uniform(-0.2, 0.2, 3)), ori=q, material=RUBBER)
     assert os.path.getsize(write_vtp(str(tmp_path / "s1.vtp"))) < 7e6
+
+
+# The contact force each triangle received in the last step, as cell data: a 642-node ball settled on a Wall
+# (damped, 0.3 s) presses on it with its weight, and only the triangles near its lowest point touch it.
+def test_cells_hold_the_contact_force_of_the_last_step(tmp_path):
+    from yade import ForceResetter, NewtonIntegrator
+    material = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-2)
+    ball = rm.add_body(rm.Mesh.icosphere(0.025, 3), pos=(0, 0, 0.0249), material=material)
+    wall = O.bodies.append(utils.wall(0, axis=2, sense=1))
+    rm.assign_material(wall, material)
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
+    series = VtkSeries(str(tmp_path))  # keeps the forces per triangle from the next step on
+    O.dt = 0.2 * rm.critical_timestep()
+    O.run(int(0.3 / O.dt), True)
+    series.write()
+    piece, arrays = read_piece(os.path.join(str(tmp_path), f"rounded_bodies_{O.iter:08d}.vtp"))
+    force, pressure = arrays["contact_force"], arrays["contact_pressure"]
+    mesh = rm.rounded_bodies()[ball]
+    assert force.shape == (len(mesh.triangles), 3)
+    # The cells add up to what the engine gave the body (the same terms, summed in another order: round-off) ...
+    np.testing.assert_allclose(force.sum(axis=0), O.forces.f(ball), rtol=1e-12, atol=1e-15)
+    # ... which, settled, is its weight: the remaining bounce of A = 0.01 s damping decays as exp(-t / 2A)-like
+    # within 0.3 s to well below 0.1 % of it.
+    weight = O.bodies[ball].state.mass * 9.81
+    assert force.sum(axis=0)[2] == pytest.approx(weight, rel=1e-3)
+    np.testing.assert_allclose(pressure, np.linalg.norm(force, axis=1) / mesh.areas, rtol=1e-15)
+    # Cells whose triangle lies wholly above the overlap (0.3 mm) do not touch the wall: exactly zero.
+    corners = arrays["Points"][arrays["connectivity"].reshape(-1, 3)]
+    lowest = corners[:, :, 2].min(axis=1)
+    assert np.all(force[lowest > 1e-3] == 0) and np.count_nonzero(force[lowest > 1e-3]) == 0
+    assert np.count_nonzero(np.linalg.norm(force, axis=1)) >= 3
+
+
+def test_no_force_cells_unless_kept(tmp_path):
+    rm.add_body(rm.Mesh.icosphere(0.5, 1), pos=(0, 0, 0), material=RUBBER)
+    _, arrays = read_piece(write_vtp(str(tmp_path / "bodies.vtp")))
+    assert "contact_force" not in arrays and "contact_pressure" not in arrays
+    rm.keep_triangle_forces()
+    _, arrays = read_piece(write_vtp(str(tmp_path / "bodies.vtp")))
+    np.testing.assert_array_equal(arrays["contact_force"], 0)  # before any step: no contact force yet

@@ -129,6 +129,30 @@ def test_sphere_resting_on_a_wall_carries_its_weight():
     assert (O.forces.f(floor) - weight).norm() < 1e-6 * weight.norm()
 
 
+# The resting ball of the test above seen through rm.contacts(): one row (sphere body, wall), the force on the
+# ball its weight's opposite, the overlap the Hertz overlap under that weight (F = (4/3) E* sqrt(R) delta^1.5,
+# R* = R against a wall; the ball rests, so damping adds no force: 1e-6 as above, 1e-5 on delta = (F/k)^(2/3)
+# for the residual motion), and O.energy's elastic entry (2/5) F delta.
+def test_a_resting_sphere_body_is_listed_by_contacts_and_energy():
+    ball = rm.add_sphere((0, 0, 0.0102), 0.01, with_damping(SOFT, 2e-3))
+    floor = O.bodies.append(utils.wall(0, axis=2, sense=1))
+    rm.assign_material(floor, STIFF)
+    engines(gravity=(0, 0, -9.81))
+    O.trackEnergy = True
+    O.dt = 0.05 * rm.critical_timestep()
+    O.run(int(0.3 / O.dt), True)
+    contacts = rm.contacts()
+    assert list(contacts["id1"]) == [ball] and list(contacts["id2"]) == [floor]
+    assert list(contacts["triangle_contacts"]) == [1] and not contacts["sliding"][0]
+    weight = O.bodies[ball].state.mass * 9.81
+    assert np.allclose(contacts["force1"][0], (0, 0, weight), rtol=0, atol=1e-6 * weight)
+    assert np.allclose(contacts["force2"][0], (0, 0, -weight), rtol=0, atol=1e-6 * weight)
+    assert np.allclose(contacts["normal"][0], (0, 0, -1), atol=1e-9)
+    overlap = (weight / (4 / 3 * effective_modulus(SOFT, STIFF) * math.sqrt(0.01))) ** (2 / 3)
+    assert math.isclose(contacts["overlap"][0], overlap, rel_tol=1e-5)
+    assert math.isclose(O.energy["rmElastPotential"], 0.4 * weight * overlap, rel_tol=2e-5)
+
+
 # A sphere body against a rounded body, a 2562-node icosphere of the same radius, through the rounded bodies'
 # own path: the force is rm.sphere_contact's (same code, to round-off), and Hertz's for R* = R/2 within 0.5 %
 # (measured: 0.25 % low at this pose; the meshed sphere against a plane at this refinement has a worst NRMSE of
