@@ -285,8 +285,9 @@ def build_roundedmesh(run, poses):
     if run == "sphere":
         return bodies, walls, f"analytic spheres of radius {RADIUS} m"
     mesh = make_mesh(run)
-    return bodies, walls, (f"{len(mesh.vertices)} nodes, {len(mesh.triangles)} triangles, volume "
-                           f"{mesh.volume:.6g} m^3")
+    volume = (f"the sphere's mass; the mesh's volume {mesh.volume:.6g} m^3" if run in ICOSPHERE_SUBDIVISIONS
+              else f"volume {mesh.volume:.6g} m^3")
+    return bodies, walls, f"{len(mesh.vertices)} nodes, {len(mesh.triangles)} triangles, {volume}"
 
 
 def build_peer(run, poses):
