@@ -44,6 +44,17 @@ def _pyplot():
     return plt
 
 
+def save(plt, figure, root, name, header, rows):
+    """Writes the figure as root/name.png and the table behind it as root/name.csv."""
+    figure.tight_layout()
+    figure.savefig(os.path.join(root, name + ".png"), dpi=120)
+    plt.close(figure)
+    with open(os.path.join(root, name + ".csv"), "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(header)
+        writer.writerows(rows)
+
+
 def mean_height_figure(root, runs):
     """Fig. 11a, whole run on the left; on the right the end of the shaking and the settling, where the shapes
     part."""
@@ -67,13 +78,7 @@ def mean_height_figure(root, runs):
         end.set(xlim=(0.45, t[-1]), ylim=(1e3 * min(lows) - 5, 1e3 * max(lows) + 5), title="from t = 0.45 s")
     whole.set_title("S1: mean height (Fig. 11a)")
     end.legend(fontsize=8)
-    figure.tight_layout()
-    figure.savefig(os.path.join(root, "fig11a_mean_height.png"), dpi=120)
-    plt.close(figure)
-    with open(os.path.join(root, "fig11a_mean_height.csv"), "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(["run", "time_s", "mean_height_m"])
-        writer.writerows(table)
+    save(plt, figure, root, "fig11a_mean_height", ["run", "time_s", "mean_height_m"], table)
 
 
 def packing_figure(root, runs):
@@ -89,13 +94,8 @@ def packing_figure(root, runs):
     axes.set(xlabel="h [mm]", ylabel="packing factor P(h) [%]", title="S1: packing factor at the end (Fig. 11b, Eq. 28)")
     axes.grid(alpha=0.3)
     axes.legend(fontsize=8)
-    figure.tight_layout()
-    figure.savefig(os.path.join(root, "fig11b_packing.png"), dpi=120)
-    plt.close(figure)
-    with open(os.path.join(root, "fig11b_packing.csv"), "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(["h_m"] + [f"P_percent_{run}" for run in runs])
-        writer.writerows([h_k] + [columns[run][k] for run in runs] for k, h_k in enumerate(h))
+    save(plt, figure, root, "fig11b_packing", ["h_m"] + [f"P_percent_{run}" for run in runs],
+         [[h_k] + [columns[run][k] for run in runs] for k, h_k in enumerate(h)])
 
 
 def drawn_mesh(run, radius):

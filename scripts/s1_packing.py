@@ -269,22 +269,22 @@ def build_roundedmesh(run, poses):
     """The bodies of `run` at `poses`, the box as roundedmesh partners and the engines. Returns (body ids, wall
     ids, description)."""
     O.reset()
+    mesh = None if run == "sphere" else make_mesh(run)  # one mesh, its tree and distance field, for every body
     bodies = []
     for position, (w, x, y, z), _, _ in poses:
         ori = Quaternion(w, x, y, z)
-        if run == "sphere":
+        if mesh is None:
             bodies.append(rm.add_sphere(position, RADIUS, PARTICLE, ori=ori))
         else:
-            bodies.append(rm.add_body(make_mesh(run), position, ori, PARTICLE))
+            bodies.append(rm.add_body(mesh, position, ori, PARTICLE))
             if run in ICOSPHERE_SUBDIVISIONS:
                 give_sphere_mass(bodies[-1])
     walls = [O.bodies.append(wall) for wall in box_walls()]
     for wall in walls:
         rm.assign_material(wall, BOX)
     O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -GRAVITY), damping=0)]
-    if run == "sphere":
+    if mesh is None:
         return bodies, walls, f"analytic spheres of radius {RADIUS} m"
-    mesh = make_mesh(run)
     volume = (f"the sphere's mass; the mesh's volume {mesh.volume:.6g} m^3" if run in ICOSPHERE_SUBDIVISIONS
               else f"volume {mesh.volume:.6g} m^3")
     return bodies, walls, f"{len(mesh.vertices)} nodes, {len(mesh.triangles)} triangles, {volume}"
