@@ -87,6 +87,25 @@ struct PairSummary {
   }
 };
 
+// One pair of a step as the stop rules see it (StopRules.hpp).
+struct PairRecord {
+  int body, other;         // engine indices, as in BodyPair
+  Real overlap = 0;        // the deepest overlap of its contacts [m], 0 if it did not touch
+  bool flat = false;       // whether the other side is a Wall, Plane, Facet or Box
+  Real side = 0;           // then: where the body's centre is against it [m] (StopRules.cpp, faceSide)
+  Vector3r position = Vector3r::Zero();  // the body's centre [m]
+};
+
+// Why a step must not be kept (StopRules.hpp): the body's centre crossed the other side's face since the last
+// step, or the pair overlaps by more than the model's stopOverlap of its size and the overlap grew.
+enum class StopCause { CentreCrossed, Overlap };
+struct StopReason {
+  StopCause cause;
+  int body, other;  // engine indices
+  Real overlap;     // the pair's deepest overlap [m] (0 if it no longer touches)
+  Real size;        // the size the overlap is measured by [m]
+};
+
 // The outcome of one pair: the wrench on each side (global frame, torque about each one's position).
 struct PairResult {
   Wrench onBody, onOther;
@@ -141,6 +160,12 @@ struct ContactData {
   bool keepTriangleContacts = false;
   std::vector<std::vector<TriangleContact>> pairContacts;
   std::vector<std::vector<PressureGeom>> geoms;   // scratch: one per thread
+
+  // The stop rules (StopRules.hpp): this step's pairs, those of the last step kept (valid if `kept`), and the
+  // reasons to stop found in this step.
+  std::vector<PairRecord> pairRecords, keptRecords;
+  bool kept = false;
+  std::vector<StopReason> stops;
 
   // The state and clump of an engine index: a body's, or past them a partner's.
   const BodyState& state(int index) const {
