@@ -4,7 +4,10 @@ of passing through; with rm.critical_timestep(impact_speed=30) a ball hard enoug
 stays above the floor; a body that passes through a Wall, a Facet or into a Box between two steps stops the run;
 a step too large for a body's speed is warned of; bears settling in a box raise none of these."""
 import math
+import os
 import re
+import subprocess
+import textwrap
 import warnings
 
 import numpy as np
@@ -222,3 +225,30 @@ def test_the_stop_message_stands_alone():
                         r"[0-9.]+ r_eq per step \(O.dt = [0-9.e-]+ s\): reduce O.dt to "
                         r"rm.critical_timestep\(impact_speed=30\) = [0-9.e-]+ s or less and start again from a state "
                         r"before the impact \(rm.checkpoint\)\.", cause), cause
+
+
+# What a user sees when the stop ends a script: YADE's report of its engine's error (FATAL ERROR, once per O.run) and
+# the script's own one-frame traceback, no traceback through roundedmesh (as test_bad_input.py checks for the other
+# errors of the engine).
+def test_a_stopped_script_reports_without_tracebacks_through_roundedmesh(tmp_path):
+    script = tmp_path / "thrown_ball.py"
+    script.write_text(textwrap.dedent("""
+        import roundedmesh as rm
+        from yade import O, utils, ForceResetter, NewtonIntegrator
+        ball = rm.add_body(rm.Mesh.icosphere(0.025, 3), pos=(0, 0, 0.03),
+                           material=rm.HertzMaterial(young=1e6, poisson=0.4, density=2000))
+        floor = O.bodies.append(utils.wall(0, axis=2, sense=0))
+        rm.assign_material(floor, rm.HertzMaterial(young=5e6, poisson=0.4, density=2000))
+        O.bodies[ball].state.vel = (0, 0, -30)
+        O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
+        O.dt = 0.2 * rm.critical_timestep()
+        O.run(100, True)
+    """))
+    out = subprocess.run(["/usr/bin/python3", str(script)], capture_output=True, text=True, timeout=120,
+                         env=os.environ)
+    assert out.returncode == 1
+    assert out.stderr.count("FATAL ERROR") == 1, out.stderr
+    assert out.stderr.count("Traceback") == 1, out.stderr
+    assert "roundedmesh/scene.py\", line" not in out.stderr
+    assert "roundedmesh stopped the run at iteration 1: rounded body 0 overlaps Wall 1" in out.stderr
+    assert out.stderr.count("RuntimeWarning: roundedmesh: rounded body 0 moves") == 1
