@@ -24,8 +24,8 @@ SPEED = 30.0
 RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000)
 RUBBER_FLOOR = rm.HertzMaterial(young=5e6, poisson=0.4, density=2000)
 # A ball a 30 m/s impact leaves within the contact's range: 1 GPa on 5 GPa (a hard plastic). At 30 m/s it reaches
-# 0.14 r_eq; the rubber ball would need 2.2 of its radii (its kinetic energy, 59 J, is six times what its contact
-# stores when pressed in by a whole radius).
+# 0.14 r_eq; the rubber ball would need 2.2 of its radii (its kinetic energy, 58 J, is seven times what its contact
+# stores when pressed in by a whole radius, 8.3 J).
 HARD = rm.HertzMaterial(young=1e9, poisson=0.4, density=2000)
 HARD_FLOOR = rm.HertzMaterial(young=5e9, poisson=0.4, density=2000)
 
@@ -252,3 +252,16 @@ def test_a_stopped_script_reports_without_tracebacks_through_roundedmesh(tmp_pat
     assert "roundedmesh/scene.py\", line" not in out.stderr
     assert "roundedmesh stopped the run at iteration 1: rounded body 0 overlaps Wall 1" in out.stderr
     assert out.stderr.count("RuntimeWarning: roundedmesh: rounded body 0 moves") == 1
+
+
+# Sphere bodies are held to the same rules, named as sphere bodies.
+def test_a_sphere_body_through_a_wall_stops_the_run():
+    wall = O.bodies.append(utils.wall(0, axis=2, sense=1))
+    rm.assign_material(wall, RUBBER_FLOOR)
+    sphere = rm.add_sphere((0, 0, 0.024), R, RUBBER)
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, 0), damping=0)]
+    O.dt = 1e-6
+    O.step()
+    O.bodies[sphere].state.pos = (0, 0, -0.01)
+    with pytest.raises(RuntimeError, match=rf"the centre of sphere body {sphere} has passed through Wall {wall}"):
+        O.step()
