@@ -70,6 +70,9 @@ struct PairSummary {
                                        // normal forces, weighted by those forces [m]
   Vector3r normal = Vector3r::Zero();  // unit, along the sum of the normal forces, from the body to the other
   Real deepestOverlap = 0;             // the largest delta_eff (Eq. B.4) [m]
+  Real depth = 0;                      // the largest delta_eff along `normal`, delta_eff (n12 . normal) [m]: how far
+                                       // the bodies overlap; the deepest triangle contact can run through both at a
+                                       // slant, longer than that (doc/physics.md, "Which triangle pairs touch")
   int triangleContacts = 0;
   bool sliding = false;                // any triangle contact sliding (Eq. 21)
   Real elasticEnergy = 0;              // sum of (2/5) F_elastic delta_s over the triangle contacts [J]
@@ -90,7 +93,7 @@ struct PairSummary {
 // One pair of a step as the stop rules see it (StopRules.hpp).
 struct PairRecord {
   int body, other;         // engine indices, as in BodyPair
-  Real overlap = 0;        // the deepest overlap of its contacts [m], 0 if it did not touch
+  Real overlap = 0;        // how far the bodies overlap [m] (PairSummary::depth), 0 if they did not touch
   bool flat = false;       // whether the other side is a Wall, Plane, Facet or Box
   Real side = 0;           // then: where the body's centre is against it [m] (StopRules.cpp, faceSide)
   Vector3r position = Vector3r::Zero();  // the body's centre [m]
@@ -102,7 +105,7 @@ enum class StopCause { CentreCrossed, Overlap };
 struct StopReason {
   StopCause cause;
   int body, other;  // engine indices
-  Real overlap;     // the pair's deepest overlap [m] (0 if it no longer touches)
+  Real overlap;     // how far the bodies overlap [m] (PairSummary::depth; 0 if they no longer touch)
   Real size;        // the size the overlap is measured by [m]
 };
 

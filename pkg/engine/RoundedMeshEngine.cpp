@@ -362,7 +362,10 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     summary.point = s1.position + toGlobal * (loaded ? Vector3r(moment / normalForce) : Vector3r(points / geoms.size()));
     if (!loaded)
       for (const PressureGeom& geom : geoms) normals += geom.normal;
-    summary.normal = toGlobal * normals.normalized();
+    const Vector3r normal = normals.normalized();
+    summary.normal = toGlobal * normal;
+    for (const PressureGeom& geom : geoms)
+      summary.depth = std::max(summary.depth, geom.effectiveOverlap * geom.normal.dot(normal));
   }
   result.onBody.force = toGlobal * local.force;
   result.onBody.torque = toGlobal * local.torque;

@@ -73,7 +73,7 @@ void checkStopRules(const ContactModel& model, ContactData& data) {
     PairRecord& r = records[k];
     r.body = pair.body;
     r.other = pair.other;
-    r.overlap = data.pairResults[k].summary.triangleContacts > 0 ? data.pairResults[k].summary.deepestOverlap : 0;
+    r.overlap = data.pairResults[k].summary.triangleContacts > 0 ? data.pairResults[k].summary.depth : 0;
     r.position = data.state(pair.body).position;
     const PartnerShape* shape = partnerShape(model, pair.other);
     r.flat = shape && isFlat(*shape);

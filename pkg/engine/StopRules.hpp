@@ -6,9 +6,12 @@
 //   crossing: a body (rounded or sphere body) whose centre has crossed a Wall's or a Plane's plane, a Facet
 //             (the segment between its centres of the two steps passes through the facet's triangle) or into a
 //             Box since the last step, in which their bounds overlapped (they touched, or were about to);
-//   overlap:  a pair whose deepest overlap exceeds model.stopOverlap times the size of the smaller side (a rounded
-//             body's volume-equivalent radius, a sphere's radius; a flat partner has no size) and has grown since
-//             the last step (a pair that starts that deep is warned of by the scene, and may come apart).
+//   overlap:  a pair whose overlap exceeds model.stopOverlap times the size of the smaller side (a rounded body's
+//             volume-equivalent radius, a sphere's radius; a flat partner has no size) and has grown since the last
+//             step (a pair that starts that deep is warned of by the scene, and may come apart). The overlap is the
+//             deepest triangle contact's along the pair's normal (PairSummary::depth): against a plane, its depth;
+//             between two bodies, about their approach, where the deepest triangle contact alone can run through
+//             both at a slant, twice as long.
 // The rules compare a step with the last step that was kept (commitStep): a step that breaks one is not kept, so
 // redoing it breaks it again.
 #pragma once

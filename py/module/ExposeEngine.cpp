@@ -117,7 +117,7 @@ class Engine {
   bp::dict contacts() const {
     std::vector<long> id1, id2, count, sliding;
     std::vector<Vector3r> force1, torque1, force2, torque2, point, normal;
-    std::vector<Real> overlap;
+    std::vector<Real> overlap, depth;
     for (size_t k = 0; k < data_.pairs.size(); ++k) {
       const PairResult& r = data_.pairResults[k];
       if (r.summary.triangleContacts == 0) continue;
@@ -130,6 +130,7 @@ class Engine {
       point.push_back(r.summary.point);
       normal.push_back(r.summary.normal);
       overlap.push_back(r.summary.deepestOverlap);
+      depth.push_back(r.summary.depth);
       count.push_back(r.summary.triangleContacts);
       sliding.push_back(r.summary.sliding);
     }
@@ -143,6 +144,7 @@ class Engine {
     d["point"] = toArray(point);
     d["normal"] = toArray(normal);
     d["overlap"] = toArray(overlap);
+    d["depth"] = toArray(depth);
     d["triangle_contacts"] = toArray(count);
     d["sliding"] = toArray(sliding).astype(np::dtype::get_builtin<bool>());
     return d;

@@ -426,7 +426,8 @@ def statistics():
 
 _NO_CONTACTS = {"id1": ((0,), int), "id2": ((0,), int), "force1": ((0, 3), float), "torque1": ((0, 3), float),
                 "force2": ((0, 3), float), "torque2": ((0, 3), float), "point": ((0, 3), float),
-                "normal": ((0, 3), float), "overlap": ((0,), float), "triangle_contacts": ((0,), int),
+                "normal": ((0, 3), float), "overlap": ((0,), float), "depth": ((0,), float),
+                "triangle_contacts": ((0,), int),
                 "sliding": ((0,), bool)}
 
 
@@ -440,6 +441,8 @@ def contacts():
                           application of its triangle contacts' normal forces, weighted by those forces)
       normal              unit vector along the pair's total normal force, from id1 toward id2
       overlap             the deepest effective overlap of its triangle contacts [m] (delta_eff, Eq. B.4)
+      depth               the deepest delta_eff along `normal` [m]: how far the bodies overlap (the deepest triangle
+                          contact alone can run through both bodies at a slant); what the stop rule compares
       triangle_contacts   number of triangle contacts (1 for a sphere body against a sphere body or a partner:
                           one contact over the whole circle)
       sliding             whether any of them slides (Eq. 21)
