@@ -179,7 +179,8 @@ def main(argv):
     with open(os.path.join(args.output, "deep_monotonicity.csv"), "w", newline="") as f:
         writer = csv.writer(f)
         writer.writerow(["orientation", "overlap_m", "overlap_r_eq", "force_along_approach_N", "force_magnitude_N",
-                         "triangle_contacts", "deepest_effective_overlap_m"] + (["volume_slope_m2"] if args.volume else []))
+                         "triangle_contacts", "deepest_effective_overlap_m"]
+                        + (["volume_slope_m2"] if args.volume else []))
         for n, (q1, q2, u) in enumerate(random_orientations(args.orientations, args.seed)):
             d0, rows = sweep(mesh, r_eq, q1, q2, u)
             slopes = volume_slopes(voxels, points, q1, q2, u, d0, r_eq) if args.volume else None
@@ -189,7 +190,8 @@ def main(argv):
             results.append((rows, slopes))
     print(f"{args.orientations} orientations, seed {args.seed}, {time.time() - started:.0f} s")
 
-    print(f"\n{'overlap up to':>14} | {'F.u falls':>18} | {'|F| falls':>18}" + (f" | {'dV/d(overlap) falls':>20}" if args.volume else ""))
+    volume_header = f" | {'dV/d(overlap) falls':>20}" if args.volume else ""
+    print(f"\n{'overlap up to':>14} | {'F.u falls':>18} | {'|F| falls':>18}{volume_header}")
     counts = {}
     for limit in LIMITS:
         last = int(round(limit / STEP))

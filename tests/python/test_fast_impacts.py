@@ -188,7 +188,7 @@ def test_stop_overlap_is_an_engine_option():
 # stability limit (S1's materials: bears 1 MPa, walls 5 MPa, A = 0.01 s, frictionless).
 def test_bears_settling_in_a_box_raise_nothing():
     bears = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=0.01)
-    open_box(0.11, rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=0.01))
+    walls = open_box(0.11, rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=0.01))
     bear = rm.Mesh.reference_shape("gummy_bear")
     rng = np.random.default_rng(3)
     ids = []
@@ -204,8 +204,14 @@ def test_bears_settling_in_a_box_raise_nothing():
     # Landed (they hit the floor and each other at up to 1.7 m/s) and settling: frictionless, they still rock.
     assert max(O.bodies[i].state.vel.norm() for i in ids) < 0.2
     assert max(O.bodies[i].state.pos[2] for i in ids) < 0.1
-    assert len(rm.contacts()["id1"]) >= 4
-    assert max(rm.contacts()["overlap"]) < 0.1 * 0.025
+    found = rm.contacts()
+    assert len(found["id1"]) >= 4
+    assert max(found["overlap"]) < 0.1 * 0.025
+    # The depth the stop rule compares: the deepest overlap along the pair's normal, at most the deepest overlap, and
+    # the same against a Wall, whose contacts share one normal.
+    assert np.all(found["depth"] <= found["overlap"] * (1 + 1e-12))
+    on_walls = np.isin(found["id2"], walls)
+    assert on_walls.any() and np.allclose(found["depth"][on_walls], found["overlap"][on_walls], rtol=1e-12)
 
 
 def test_the_stop_message_stands_alone():
@@ -219,8 +225,8 @@ def test_the_stop_message_stands_alone():
     message = str(stopped.value)
     cause = message[message.index("roundedmesh stopped"):]
     cause = cause[:cause.index("\n")] if "\n" in cause else cause
-    assert re.fullmatch(r"roundedmesh stopped the run at iteration \d+: rounded body \d+ overlaps Facet \d+ by [0-9.e-]+ m "
-                        r"\(0\.\d\d r_eq, r_eq = 0.0249 m\) and the overlap grows: past 0.5 r_eq "
+    assert re.fullmatch(r"roundedmesh stopped the run at iteration \d+: rounded body \d+ overlaps Facet \d+ "
+                        r"by [0-9.e-]+ m \(0\.\d\d r_eq, r_eq = 0.0249 m\) and the overlap grows: past 0.5 r_eq "
                         r"\(rm.engine\(stop_overlap=...\)\) the contact no longer describes it\. At 30 m/s it moves "
                         r"[0-9.]+ r_eq per step \(O.dt = [0-9.e-]+ s\): reduce O.dt to "
                         r"rm.critical_timestep\(impact_speed=30\) = [0-9.e-]+ s or less and start again from a state "
