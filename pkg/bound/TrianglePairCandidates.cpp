@@ -118,15 +118,43 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
   pairs.clear();
   const Matrix3r back = rotation.transpose();
   const Vector3r backTranslation = -(back * translation);
-  TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, depth + skin, [&](int s, int t) {
-    if (!canTouch(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin, false)) return;
-    const bool onlyDeep = depth > shallow && !mesh1.tree().triangleBox(s).intersects(
-                                                 transformedBox(mesh2.tree().triangleBox(t), rotation, translation, shallow + skin));
-    if (onlyDeep && !(capReaches(mesh1, s, PlacedMesh{mesh2, rotation, translation}, 2 * skin) &&
-                      capReaches(mesh2, t, PlacedMesh{mesh1, back, backTranslation}, 2 * skin)))
-      return;
-    pairs.push_back({s, t});
+  auto bothReach = [&](int s, int t) {
+    return capReaches(mesh1, s, PlacedMesh{mesh2, rotation, translation}, 2 * skin) &&
+           capReaches(mesh2, t, PlacedMesh{mesh1, back, backTranslation}, 2 * skin);
+  };
+  // A list up to twice the Hertz range: every pair of the trees within depth + skin, those farther apart than
+  // shallow + skin only if both caps reach the other body.
+  if (depth <= 2 * shallow) {
+    TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, depth + skin, [&](int s, int t) {
+      if (!canTouch(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin, false)) return;
+      const bool onlyDeep = depth > shallow && !mesh1.tree().triangleBox(s).intersects(
+                                                   transformedBox(mesh2.tree().triangleBox(t), rotation, translation, shallow + skin));
+      if (!onlyDeep || bothReach(s, t)) pairs.push_back({s, t});
+    });
+    return;
+  }
+  // Deeper (a pair past the Hertz range holds a list as deep as the bodies: RoundedMeshEngine.cpp), the same pairs
+  // without searching every pair of the trees within that depth: those within shallow + skin from the trees, the
+  // others among the few triangles whose caps reach the other body (the ones in or at it).
+  TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, shallow + skin, [&](int s, int t) {
+    if (canTouch(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin, false)) pairs.push_back({s, t});
   });
+  std::vector<int> reaching1, reaching2;
+  for (int s = 0; s < mesh1.triangleCount(); ++s)
+    if (capReaches(mesh1, s, PlacedMesh{mesh2, rotation, translation}, 2 * skin)) reaching1.push_back(s);
+  if (reaching1.empty()) return;
+  for (int t = 0; t < mesh2.triangleCount(); ++t)
+    if (capReaches(mesh2, t, PlacedMesh{mesh1, back, backTranslation}, 2 * skin)) reaching2.push_back(t);
+  for (int t : reaching2) {
+    const AlignedBox3r& box2 = mesh2.tree().triangleBox(t);
+    const AlignedBox3r within = transformedBox(box2, rotation, translation, depth + skin);
+    const AlignedBox3r nearer = transformedBox(box2, rotation, translation, shallow + skin);
+    for (int s : reaching1) {
+      const AlignedBox3r& box1 = mesh1.tree().triangleBox(s);
+      if (!box1.intersects(within) || box1.intersects(nearer)) continue;  // too far, or found above
+      if (canTouch(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin, false)) pairs.push_back({s, t});
+    }
+  }
 }
 
 void touchableTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,

@@ -70,6 +70,9 @@ struct PairSummary {
                                        // normal forces, weighted by those forces [m]
   Vector3r normal = Vector3r::Zero();  // unit, along the sum of the normal forces, from the body to the other
   Real deepestOverlap = 0;             // the largest delta_eff (Eq. B.4) [m]
+  Real depth = 0;                      // the largest delta_eff along `normal`, delta_eff (n12 . normal) [m]: how far
+                                       // the bodies overlap; the deepest triangle contact can run through both at a
+                                       // slant, longer than that (doc/physics.md, "Which triangle pairs touch")
   int triangleContacts = 0;
   bool sliding = false;                // any triangle contact sliding (Eq. 21)
   Real elasticEnergy = 0;              // sum of (2/5) F_elastic delta_s over the triangle contacts [J]
@@ -85,6 +88,25 @@ struct PairSummary {
     dampingPower += (load.force - load.elasticForce) * geom.overlapRate;
     frictionPower -= friction.force.dot(geom.slip);
   }
+};
+
+// One pair of a step as the stop rules see it (StopRules.hpp).
+struct PairRecord {
+  int body, other;         // engine indices, as in BodyPair
+  Real overlap = 0;        // how far the bodies overlap [m] (PairSummary::depth), 0 if they did not touch
+  bool flat = false;       // whether the other side is a Wall, Plane, Facet or Box
+  Real side = 0;           // then: where the body's centre is against it [m] (StopRules.cpp, faceSide)
+  Vector3r position = Vector3r::Zero();  // the body's centre [m]
+};
+
+// Why a step must not be kept (StopRules.hpp): the body's centre crossed the other side's face since the last
+// step, or the pair overlaps by more than the model's stopOverlap of its size and the overlap grew.
+enum class StopCause { CentreCrossed, Overlap };
+struct StopReason {
+  StopCause cause;
+  int body, other;  // engine indices
+  Real overlap;     // how far the bodies overlap [m] (PairSummary::depth; 0 if they no longer touch)
+  Real size;        // the size the overlap is measured by [m]
 };
 
 // The outcome of one pair: the wrench on each side (global frame, torque about each one's position).
@@ -141,6 +163,12 @@ struct ContactData {
   bool keepTriangleContacts = false;
   std::vector<std::vector<TriangleContact>> pairContacts;
   std::vector<std::vector<PressureGeom>> geoms;   // scratch: one per thread
+
+  // The stop rules (StopRules.hpp): this step's pairs, those of the last step kept (valid if `kept`), and the
+  // reasons to stop found in this step.
+  std::vector<PairRecord> pairRecords, keptRecords;
+  bool kept = false;
+  std::vector<StopReason> stops;
 
   // The state and clump of an engine index: a body's, or past them a partner's.
   const BodyState& state(int index) const {

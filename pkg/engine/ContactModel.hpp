@@ -28,6 +28,11 @@ using PartnerShape = std::variant<Plane, Wall, Box, Facet, Sphere>;
 // deep-contact criterion (DeepContactCriterion.hpp), and the overlap of the time-step estimate (CriticalTimeStep.hpp).
 constexpr Real kDeepestOverlap = 0.1;
 
+// The overlap, as a fraction of the smaller side's size (volume-equivalent radius, or a sphere's radius), past which
+// a growing overlap stops the run (StopRules.hpp): the depth to which two bodies' contact force is measured
+// (doc/validation.md, "Deep overlaps"). A body resting under its weight overlaps about 0.01.
+constexpr Real kStopOverlap = 0.5;
+
 struct RoundedBody {
   int id;
   std::shared_ptr<const RoundedMesh> mesh;  // in the body's principal frame
@@ -62,6 +67,7 @@ struct ContactModel {
   std::vector<Partner> partners;
   PressureOptions pressure;
   ListSkins skins;
+  Real stopOverlap = kStopOverlap;  // infinite: no overlap stops a run (StopRules.hpp)
 };
 
 }  // namespace roundedmesh

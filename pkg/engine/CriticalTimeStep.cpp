@@ -20,14 +20,16 @@ struct Side {
 
 // Infinite for two rigid sides, which have no Hertz contact (the scene refuses them), and for two sides that
 // do not move under forces.
-Real pairLimit(Side a, Side b) {
+Real pairLimit(Side a, Side b, Real impactSpeed) {
   if (std::isinf(a.material->young) && std::isinf(b.material->young)) return std::numeric_limits<Real>::infinity();
   if (!(a.mass > 0)) std::swap(a, b);
   if (!(a.mass > 0)) return std::numeric_limits<Real>::infinity();
   const HertzPhys phys = Ip2_HertzMaterial_HertzMaterial_HertzPhys(*a.material, *b.material);
   const Real mass = b.mass > 0 ? a.mass * b.mass / (a.mass + b.mass) : a.mass;
   const Real radius = std::isinf(b.radius) ? a.radius : a.radius * b.radius / (a.radius + b.radius);
-  return criticalTimeStep(mass, phys.effectiveModulus, radius, phys.damping, kDeepestOverlap * std::min(a.radius, b.radius));
+  const Real overlap = kDeepestOverlap * std::min(a.radius, b.radius);
+  return std::min(criticalTimeStep(mass, phys.effectiveModulus, radius, phys.damping, overlap),
+                  impactTimeStep(mass, phys.effectiveModulus, radius, overlap, impactSpeed));
 }
 
 Real partnerRadius(const PartnerShape& shape) {
@@ -38,7 +40,7 @@ Real partnerRadius(const PartnerShape& shape) {
 }  // namespace
 
 StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>& bodyMasses,
-                              const std::vector<Real>& partnerMasses) {
+                              const std::vector<Real>& partnerMasses, Real impactSpeed) {
   StabilityLimit limit;
   const int bodyCount = static_cast<int>(model.bodies.size());
   // Every side as an engine index (bodies, then partners), and which ones move through the engine's contacts:
@@ -68,10 +70,10 @@ StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>
   };
   for (int b : kinds) {
     for (int k : kinds)
-      if (k >= b) consider(pairLimit(side(b), side(k)), b, k);
+      if (k >= b) consider(pairLimit(side(b), side(k), impactSpeed), b, k);
     // Partners other than bodies: a sphere body meets them all, a rounded body every partner.
     for (int p = bodyCount; p < count; ++p)
-      if (b < bodyCount || !isBody(p)) consider(pairLimit(side(b), side(p)), b, p);
+      if (b < bodyCount || !isBody(p)) consider(pairLimit(side(b), side(p), impactSpeed), b, p);
   }
   return limit;
 }

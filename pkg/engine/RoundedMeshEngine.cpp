@@ -20,9 +20,19 @@ namespace roundedmesh {
 namespace {
 
 constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
-// Passes of one pair's evaluation while its deepest contact outgrows its list: each grows the depth held by half;
-// from 0.1 r_eq, 8 passes reach 2.5 r_eq, deeper than two bodies can overlap.
+// Passes of one pair's evaluation while its deepest contact outgrows its list. A pair within the Hertz range grows
+// its list's depth by half per pass; one past it takes a list as deep as the bodies (deepestPossible) at once.
 constexpr int kDeepeningPasses = 8;
+
+// The deepest effective overlap a triangle pair of these bodies can have and pass the deep-contact criterion
+// (DeepContactCriterion.hpp): its surface points q1, q2 both lie within each body's solid, up to the criterion's
+// tolerance, so |q1 - q2| is at most the diameter of the ball that holds the smaller one.
+Real deepestPossible(const RoundedMesh& a, const RoundedMesh& b) {
+  auto reach = [](const RoundedMesh& m) {
+    return m.sphereBoundRadius() + m.maxCapHeight() + m.solidDistance().tolerance();
+  };
+  return 2 * std::min(reach(a), reach(b));
+}
 
 // Ig2 of a body against a plane given in the global frame.
 void planeGeometry(const RoundedMesh& mesh, const Plane& global, const BodyState& body, const Matrix3r& toBody,
@@ -63,25 +73,30 @@ Real motionBound(const Quaternionr& fromRotation, const Vector3r& fromTranslatio
   return (translation - fromTranslation).norm() + 2 * (fromRotation.conjugate() * rotation).vec().norm() * boundRadius;
 }
 
-// The candidate list of two rounded bodies, brought up to date for body 2's pose in body 1's frame. A list
-// holds contacts 1.5 times as deep as the pair's deepest one at its last evaluation, plus two skins: contacts
-// deepen continuously, so the list grows with them (a new list holds `shallow`, the deepest contact meant to
-// be Hertzian). It is rebuilt when it was never built, when body 2 may have moved by more than the skin since,
-// when the deepest contact comes within a skin of the depth it holds, or when it holds more than twice the
-// depth needed (a pair that has come apart). The new skin follows the pair's motion per step (ListSkins); the
-// near list it is taken from is searched again only when it no longer covers the new one.
+// The candidate list of two rounded bodies, brought up to date for body 2's pose in body 1's frame. Within the
+// Hertz range a list holds contacts 1.5 times as deep as the pair's deepest one at its last evaluation, plus two
+// skins: contacts deepen continuously, so the list grows with them (a new list holds `shallow`, the deepest contact
+// meant to be Hertzian). A pair past it holds every contact it can have, `full` deep (deepestPossible): the
+// deep-contact criterion can accept a pair much deeper than the others at once (a segment through both bodies at
+// a slant), which a list grown from the deepest one would miss. A list is rebuilt when it was never built, when
+// body 2 may have moved by more than the skin since, when the deepest contact comes within a skin of the depth it
+// holds or passes the Hertz range, or when it holds more than twice the depth needed (a pair that has come apart).
+// The new skin follows the pair's motion per step (ListSkins); the near list it is taken from is searched again
+// only when it no longer covers the new one.
 void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Quaternionr& rotation,
                       const Matrix3r& matrix, const Vector3r& translation, const ListSkins& skins, Real radius,
-                      Real shallow, CandidateList& list, ContactStatistics& statistics) {
+                      Real shallow, Real full, CandidateList& list, ContactStatistics& statistics) {
   const Real bound = mesh2.sphereBoundRadius();
+  auto needed = [&](Real skin) { return list.deepest > shallow ? full : 1.5 * list.deepest + 2 * skin; };
   Real skin = skins.candidatesMin * radius, depth = shallow;
   if (list.built) {
     ++list.age;
     const Real motion = motionBound(list.rotation, list.translation, rotation, translation, bound);
-    const Real needed = 1.5 * list.deepest + 2 * list.skin;
-    if (motion <= list.skin && list.deepest <= list.depth - list.skin && list.depth <= 2 * needed) return;
+    if (motion <= list.skin && list.deepest <= list.depth - list.skin && list.depth <= 2 * needed(list.skin) &&
+        (list.deepest <= shallow || list.depth >= full))
+      return;
     skin = std::clamp(skins.candidateSteps * motion / list.age, skin, skins.candidatesMax * radius);
-    depth = 1.5 * list.deepest + 2 * skin;
+    depth = needed(skin);
   }
   const bool nearCovers = list.nearSkin > 0 && depth <= list.nearDepth &&
                           motionBound(list.nearRotation, list.nearTranslation, rotation, translation, bound) + skin <=
@@ -125,17 +140,25 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
     CandidateList& list = candidates ? *candidates : fresh;
     const Real shallow = kDeepestOverlap * smaller;
     // A contact deeper than its list holds may have neighbours deeper still that the list missed: the list grows
-    // with it and the pair is evaluated again (a few passes take a fresh list of a deep overlap to its depth).
+    // with it and the pair is evaluated again (a pair past the Hertz range takes a list of every contact it can
+    // have, in one more pass).
+    Real full = 0;  // deepestPossible, found when first needed (it builds the bodies' distance fields)
+    auto fullDepth = [&]() {
+      if (full == 0) full = deepestPossible(*body.mesh, *other.mesh);
+      return full;
+    };
     for (int pass = 0;; ++pass) {
-      updateCandidates(*body.mesh, *other.mesh, rotation, matrix, translation, model.skins, smaller, shallow, list,
-                       statistics);
+      updateCandidates(*body.mesh, *other.mesh, rotation, matrix, translation, model.skins, smaller, shallow,
+                       list.deepest > shallow ? fullDepth() : shallow, list, statistics);
       NarrowPhaseCounts counts;
       geoms.clear();
       Ig2_RoundedMesh_RoundedMesh_PressureGeom(*body.mesh, *other.mesh, matrix, translation, list.pairs, shallow,
                                                motion, GeomOutput(geoms, &counts));
       list.deepest = 0;
       for (const PressureGeom& geom : geoms) list.deepest = std::max(list.deepest, geom.effectiveOverlap);
-      if (list.deepest <= list.depth - list.skin || pass == kDeepeningPasses) {
+      const bool complete =
+          list.deepest <= list.depth - list.skin && (list.deepest <= shallow || list.depth >= fullDepth());
+      if (complete || pass == kDeepeningPasses) {
         statistics.narrowPhase += counts;
         return;
       }
@@ -150,8 +173,7 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
                         [&](const Facet& facet) {
                           std::array<Vector3r, 3> corners = facetCorners(facet, s2.position, s2.orientation);
                           for (Vector3r& x : corners) x = local(x);
-                          Ig2_RoundedMesh_Facet_PressureGeom(*body.mesh, corners, kDeepestOverlap * body.equivalentRadius,
-                                                             motion, out);
+                          Ig2_RoundedMesh_Facet_PressureGeom(*body.mesh, corners, motion, out);
                         },
                         [&](const Sphere& sphere) {
                           Ig2_RoundedMesh_Sphere_PressureGeom(*body.mesh, sphere, local(s2.position), motion, out);
@@ -340,7 +362,10 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     summary.point = s1.position + toGlobal * (loaded ? Vector3r(moment / normalForce) : Vector3r(points / geoms.size()));
     if (!loaded)
       for (const PressureGeom& geom : geoms) normals += geom.normal;
-    summary.normal = toGlobal * normals.normalized();
+    const Vector3r normal = normals.normalized();
+    summary.normal = toGlobal * normal;
+    for (const PressureGeom& geom : geoms)
+      summary.depth = std::max(summary.depth, geom.effectiveOverlap * geom.normal.dot(normal));
   }
   result.onBody.force = toGlobal * local.force;
   result.onBody.torque = toGlobal * local.torque;

@@ -48,6 +48,7 @@ PairResult resolveSpherePair(const ContactModel& model, const ContactData& data,
   result.statistics.slidingContacts = friction.sliding;
   result.summary.add(geom, load, friction);
   result.summary.triangleContacts = 1;  // the one contact over the whole circle
+  result.summary.depth = result.summary.deepestOverlap;
   result.summary.point = s1.position + planePoint(geom, geom.effectivePoint);
   result.summary.normal = geom.normal;
   // The normal force acts along the line of centres (c lies on it) and has no moment about the sphere's centre.

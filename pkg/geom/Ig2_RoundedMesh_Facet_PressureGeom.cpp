@@ -2,7 +2,7 @@
 
 namespace roundedmesh {
 
-void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::array<Vector3r, 3>& corners, Real margin,
+void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::array<Vector3r, 3>& corners,
                                         const RelativeMotion& motion, GeomOutput out) {
   const Vector3r normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
   ContactFace face;
@@ -18,9 +18,10 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::arra
   face.faceOutline = &outline;
 
   AlignedBox3r box;
-  for (const Vector3r& x : corners) box.extend(x);
-  box.min().array() -= margin;
-  box.max().array() += margin;
+  for (const Vector3r& x : corners) {
+    box.extend(x);
+    box.extend(x + mesh.sphereBoundRadius() * face.normal);
+  }
   PressureGeom geom;
   mesh.tree().query([&](const AlignedBox3r& b) { return b.intersects(box); }, [&](int t) {
     out.add(trianglePlaneGeom(mesh, t, face, motion, geom), geom);

@@ -9,6 +9,7 @@
 #include "pkg/engine/CriticalTimeStep.hpp"
 #include "pkg/engine/PairEvaluation.hpp"
 #include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/StopRules.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "py/module/NumpyConversion.hpp"
 #include "py/module/YadeBridge.hpp"
@@ -54,18 +55,29 @@ class Engine {
     const int id = bp::extract<int>(body.attr("id"));
     model_.partners.push_back({id, sphereShape(body, id), material, true});
   }
-  void setOptions(Real gamma, const std::string& regime) { model_.pressure = pressureOptions(gamma, regime); }
+  void setOptions(Real gamma, const std::string& regime, Real stopOverlap) {
+    if (!(stopOverlap > 0))
+      throw std::invalid_argument("stop_overlap must be positive (math.inf: never), got " + std::to_string(stopOverlap));
+    model_.pressure = pressureOptions(gamma, regime);
+    model_.stopOverlap = stopOverlap;
+  }
 
   // One contact step on the current YADE scene; returns the ids of managed bodies that have left it (and
-  // then applies nothing).
+  // then applies nothing). A step that breaks a stop rule (StopRules.hpp; stops()) applies nothing either and is
+  // not kept: the next call compares with the same last step.
   bp::list step(const bp::object& omega) {
     const auto start = std::chrono::steady_clock::now();
     bp::list missing;
+    data_.stops.clear();
     for (int id : readScene(omega, model_, data_)) missing.append(id);
     if (bp::len(missing) > 0) return missing;
     const auto read = std::chrono::steady_clock::now();
     RoundedMeshEngine(model_, data_);
+    checkStopRules(model_, data_);
+    fastest_ = fastestBody(model_, data_, bp::extract<Real>(omega.attr("dt")));
     const auto computed = std::chrono::steady_clock::now();
+    if (!data_.stops.empty()) return missing;
+    commitStep(data_);
     applyWrenches(omega, model_, data_);
     readMs_ = std::chrono::duration<Real, std::milli>(read - start).count();
     writeMs_ = std::chrono::duration<Real, std::milli>(std::chrono::steady_clock::now() - computed).count();
@@ -74,11 +86,30 @@ class Engine {
 
   // (time step [s], YADE id of the body, YADE id of the other body) of the most restrictive pair, for the
   // masses the bodies have in YADE now (a partner's mass 0 if it does not move under forces).
-  bp::tuple stabilityLimit(const bp::object& bodyMasses, const bp::object& partnerMasses) const {
+  // With impactSpeed [m/s] > 0, also the step that resolves an impact at that speed (impactTimeStep).
+  bp::tuple stabilityLimit(const bp::object& bodyMasses, const bp::object& partnerMasses, Real impactSpeed) const {
     const StabilityLimit limit = roundedmesh::stabilityLimit(model_, toReals(bodyMasses, model_.bodies.size()),
-                                                             toReals(partnerMasses, model_.partners.size()));
+                                                             toReals(partnerMasses, model_.partners.size()), impactSpeed);
     if (limit.body < 0) return bp::make_tuple(limit.timeStep, -1, -1);
     return bp::make_tuple(limit.timeStep, yadeId(limit.body), yadeId(limit.other));
+  }
+
+  // Why the last step was not kept, worst first: (cause 'crossed' or 'overlap', YADE id of the body, of the other
+  // side, the pair's deepest overlap [m], the size it is measured by [m]).
+  bp::list stops() const {
+    bp::list listed;
+    for (const StopReason& s : data_.stops)
+      listed.append(bp::make_tuple(s.cause == StopCause::CentreCrossed ? "crossed" : "overlap", yadeId(s.body),
+                                   yadeId(s.other), s.overlap, s.size));
+    return listed;
+  }
+
+  // The body that moved fastest for its contact depth in the last step: (YADE id or -1, speed [m/s], speed * O.dt
+  // over its contact depth kDeepestOverlap * size, that depth [m]).
+  bp::tuple fastest() const {
+    if (fastest_.body < 0) return bp::make_tuple(-1, 0.0, 0.0, 0.0);
+    return bp::make_tuple(yadeId(fastest_.body), fastest_.speed, fastest_.fraction,
+                          kDeepestOverlap * sideSize(model_, fastest_.body));
   }
 
   // Every pair of the last step with at least one triangle contact, as arrays with one row per pair
@@ -86,7 +117,7 @@ class Engine {
   bp::dict contacts() const {
     std::vector<long> id1, id2, count, sliding;
     std::vector<Vector3r> force1, torque1, force2, torque2, point, normal;
-    std::vector<Real> overlap;
+    std::vector<Real> overlap, depth;
     for (size_t k = 0; k < data_.pairs.size(); ++k) {
       const PairResult& r = data_.pairResults[k];
       if (r.summary.triangleContacts == 0) continue;
@@ -99,6 +130,7 @@ class Engine {
       point.push_back(r.summary.point);
       normal.push_back(r.summary.normal);
       overlap.push_back(r.summary.deepestOverlap);
+      depth.push_back(r.summary.depth);
       count.push_back(r.summary.triangleContacts);
       sliding.push_back(r.summary.sliding);
     }
@@ -112,6 +144,7 @@ class Engine {
     d["point"] = toArray(point);
     d["normal"] = toArray(normal);
     d["overlap"] = toArray(overlap);
+    d["depth"] = toArray(depth);
     d["triangle_contacts"] = toArray(count);
     d["sliding"] = toArray(sliding).astype(np::dtype::get_builtin<bool>());
     return d;
@@ -191,6 +224,7 @@ class Engine {
 
   ContactModel model_;
   ContactData data_;
+  FastBody fastest_;
   Real readMs_ = 0, writeMs_ = 0;  // the bridge's share of the last step: states in, wrenches out
 };
 
@@ -291,9 +325,12 @@ void exposeEngine() {
       .def("add_body", &Engine::addBody, (bp::arg("id"), bp::arg("mesh"), bp::arg("material")))
       .def("add_partner", &Engine::addPartner, (bp::arg("body"), bp::arg("material")))
       .def("add_sphere", &Engine::addSphere, (bp::arg("body"), bp::arg("material")))
-      .def("set_options", &Engine::setOptions, (bp::arg("gamma"), bp::arg("regime")))
+      .def("set_options", &Engine::setOptions, (bp::arg("gamma"), bp::arg("regime"), bp::arg("stop_overlap")))
       .def("step", &Engine::step, bp::arg("O"))
-      .def("stability_limit", &Engine::stabilityLimit, (bp::arg("body_masses"), bp::arg("partner_masses")))
+      .def("stops", &Engine::stops)
+      .def("fastest", &Engine::fastest)
+      .def("stability_limit", &Engine::stabilityLimit,
+           (bp::arg("body_masses"), bp::arg("partner_masses"), bp::arg("impact_speed") = 0.0))
       .add_property("statistics", &Engine::statistics)
       .def("contacts", &Engine::contacts)
       .def("energy", &Engine::energy)

@@ -38,7 +38,11 @@ from ._core import Engine, HertzMaterial, Mesh, partner_kind
 _PREFIX = "roundedmesh."
 _REVISION = _PREFIX + "revision"
 _ENGINE_COMMAND = "__import__('roundedmesh').scene.step"
-_ENGINE_OPTIONS = {"gamma": 10.0, "regime": "auto"}
+# Past this overlap, as a fraction of the smaller side's size (a rounded body's volume-equivalent radius r_eq, a
+# sphere's radius), a pair whose overlap grows stops the run (kStopOverlap in pkg/engine/ContactModel.hpp;
+# doc/physics.md, "Deep overlaps and fast impacts").
+STOP_OVERLAP = 0.5
+_ENGINE_OPTIONS = {"gamma": 10.0, "regime": "auto", "stop_overlap": STOP_OVERLAP}
 
 
 # --- what the scene's tags hold -----------------------------------------------------------------------
@@ -338,9 +342,13 @@ def set_material(body_id, material):
 
 def engine(label="", **options):
     """The engine to put in O.engines between ForceResetter and NewtonIntegrator. Options:
-      gamma  -- expected number of quadrature points in a contact circle below which a triangle contact
-                uses the direct regime (Eq. 14); default 10, as in the paper
-      regime -- 'auto' (Eq. 14), or 'quadrature' / 'direct' to force one regime (for validation)
+      gamma        -- expected number of quadrature points in a contact circle below which a triangle contact
+                      uses the direct regime (Eq. 14); default 10, as in the paper
+      regime       -- 'auto' (Eq. 14), or 'quadrature' / 'direct' to force one regime (for validation)
+      stop_overlap -- a pair whose overlap grows past this fraction of the smaller side's size (r_eq, or a
+                      sphere's radius) stops the run; default STOP_OVERLAP = 0.5, math.inf never
+    A body whose centre passes through a Wall, Facet or Box it was near in the step before stops the run too
+    (doc/user-guide.md, "Choosing the time step").
     """
     unknown = sorted(set(options) - set(_ENGINE_OPTIONS))
     if unknown:
@@ -349,19 +357,38 @@ def engine(label="", **options):
     if isinstance(chosen["gamma"], bool) or not isinstance(chosen["gamma"], numbers.Real):
         raise TypeError(f"gamma: expected a number, got {chosen['gamma']!r}")
     chosen["gamma"] = float(chosen["gamma"])
+    if isinstance(chosen["stop_overlap"], bool) or not isinstance(chosen["stop_overlap"], numbers.Real):
+        raise TypeError(f"stop_overlap: expected a number, got {chosen['stop_overlap']!r}")
+    if not chosen["stop_overlap"] > 0:
+        raise ValueError(f"stop_overlap: must be positive (math.inf: never), got {chosen['stop_overlap']!r}")
+    chosen["stop_overlap"] = float(chosen["stop_overlap"])
     for name, value in (("regime", chosen["regime"]), ("label", label)):
         if not isinstance(value, str):
             raise TypeError(f"{name}: expected a string, got {value!r}")
     Engine().set_options(**chosen)
-    arguments = ", ".join(f"{k}={v!r}" for k, v in chosen.items())
+    arguments = ", ".join(f"{k}={_literal(v)}" for k, v in chosen.items())
     return PyRunner(command=f"{_ENGINE_COMMAND}({arguments})", iterPeriod=1, initRun=True, label=label)
 
 
-def critical_timestep():
+def _literal(value):
+    """`value` as Python source that evaluates to it (repr(math.inf) is 'inf', which does not)."""
+    return f"float('{value}')" if isinstance(value, float) and not math.isfinite(value) else repr(value)
+
+
+def critical_timestep(impact_speed=None):
     """Largest stable O.dt for the current scene's contacts of rounded bodies and sphere bodies with each other
-    and with partners [s], inf if there are none (see doc/physics.md, "Time step"). Use a fraction of it for accuracy."""
+    and with partners [s], inf if there are none (see doc/physics.md, "Time step"). Use a fraction of it for accuracy.
+
+    With impact_speed [m/s], the largest impact speed the scene will see, the step is also small enough to resolve
+    such an impact: bodies meeting at that speed move in one step at most a tenth of the depth the impact
+    reaches, and at most a tenth of the Hertz depth 0.1 r_eq (doc/physics.md, "Deep overlaps and fast impacts")."""
+    if impact_speed is not None:
+        if isinstance(impact_speed, bool) or not isinstance(impact_speed, numbers.Real):
+            raise TypeError(f"impact_speed: expected a number [m/s], got {impact_speed!r}")
+        if not (math.isfinite(impact_speed) and impact_speed >= 0):
+            raise ValueError(f"impact_speed: must be a finite speed >= 0 [m/s], got {impact_speed!r}")
     state = _current_state()
-    return state.stability()[0] if state else math.inf
+    return state.stability(impact_speed or 0.0)[0] if state else math.inf
 
 
 _STATISTICS = ("body_pairs", "touching_pairs", "candidates", "rejected_not_facing", "rejected_no_overlap",
@@ -399,7 +426,8 @@ def statistics():
 
 _NO_CONTACTS = {"id1": ((0,), int), "id2": ((0,), int), "force1": ((0, 3), float), "torque1": ((0, 3), float),
                 "force2": ((0, 3), float), "torque2": ((0, 3), float), "point": ((0, 3), float),
-                "normal": ((0, 3), float), "overlap": ((0,), float), "triangle_contacts": ((0,), int),
+                "normal": ((0, 3), float), "overlap": ((0,), float), "depth": ((0,), float),
+                "triangle_contacts": ((0,), int),
                 "sliding": ((0,), bool)}
 
 
@@ -413,6 +441,8 @@ def contacts():
                           application of its triangle contacts' normal forces, weighted by those forces)
       normal              unit vector along the pair's total normal force, from id1 toward id2
       overlap             the deepest effective overlap of its triangle contacts [m] (delta_eff, Eq. B.4)
+      depth               the deepest delta_eff along `normal` [m]: how far the bodies overlap (the deepest triangle
+                          contact alone can run through both bodies at a slant); what the stop rule compares
       triangle_contacts   number of triangle contacts (1 for a sphere body against a sphere body or a partner:
                           one contact over the whole circle)
       sliding             whether any of them slides (Eq. 21)
@@ -499,16 +529,20 @@ class _SceneState:
         self.options = None
         self.checked_dt = None
         self.stepped_iteration = None  # O.iter of the last step computed; None before the first
+        self.warned_fast = False  # whether a body has been too fast for the step (_warn_fast_bodies)
 
-    def stability(self):
-        """(limit [s], body id, id of the other body) for the masses the bodies have in YADE now. A body erased since
-        the last step (the next step forgets it) is left out: infinite mass puts no limit."""
+    def stability(self, impact_speed=0.0):
+        """(limit [s], body id, id of the other body) for the masses the bodies have in YADE now, and with
+        impact_speed > 0 for impacts at that speed [m/s]. A body erased since the last step (the next step forgets
+        it) is left out: infinite mass puts no limit."""
         bodies = [_body_or_none(i) for i in self.body_ids]
         partners = [_body_or_none(i) for i in self.partner_ids]
         return self.engine.stability_limit([b.state.mass if b else math.inf for b in bodies],
-                                           [p.state.mass if p and p.dynamic else 0.0 for p in partners])
+                                           [p.state.mass if p and p.dynamic else 0.0 for p in partners],
+                                           float(impact_speed))
 
     def prepare(self, options):
+        options = {**_ENGINE_OPTIONS, **options}  # an engine saved before an option existed has its default
         if options != self.options:
             self.engine.set_options(**options)
             self.options = options
@@ -623,12 +657,16 @@ def step(**options):
         _forget(missing)
         step(**options)
         return
+    stops = state.engine.stops()
+    if stops:  # nothing was applied, and the step is not kept: redoing it stops again
+        raise ValueError(_stop_message(state, stops))
     first = state.stepped_iteration is None
     state.stepped_iteration = O.iter
     if O.trackEnergy:
         _track_energy(state.engine.energy())
     if first:
         _warn_deep_overlaps(state)
+    _warn_fast_bodies(state)
 
 
 # Energy keys in O.energy, named as YADE names its own: the elastic energy of the contacts, set every step (a state,
@@ -676,6 +714,86 @@ def _warn_deep_overlaps(state):
     warnings.warn(f"roundedmesh: {len(deep)} pair(s) start overlapped deeper than {DEEP_OVERLAP:g} of the smaller "
                   f"body's volume-equivalent radius r_eq, beyond what a Hertz contact describes: {listed}{more}. "
                   "Move the bodies apart before the run", RuntimeWarning)
+
+
+# A body that moves more than this fraction of its contact depth (0.1 r_eq) in one step is warned of, once per run
+# (doc/physics.md, "Deep overlaps and fast impacts"): an impact reaching that depth is integrated with its energy off
+# by up to about 2.5 %, at one full depth per step by 15 %, and past 1.5 the step is unstable for it.
+FAST_STEP = 0.5
+
+
+def _describe(state, body_id):
+    """'rounded body 3', 'sphere body 4', 'Wall 0', ... ."""
+    if body_id in state.body_ids:
+        return f"rounded body {body_id}"
+    if _tag(f"sphere.{body_id}"):
+        return f"sphere body {body_id}"
+    body = _body_or_none(body_id)
+    return f"{partner_kind(body) if body is not None else 'body'} {body_id}"
+
+
+def _size_name(state, body_id):
+    return "r_eq" if body_id in state.body_ids else "radius"
+
+
+def _relative_speed(body_id, other_id):
+    body, other = _body_or_none(body_id), _body_or_none(other_id)
+    velocity = body.state.vel if body is not None else Vector3.Zero
+    if other is not None:
+        velocity = velocity - other.state.vel
+    return velocity.norm()
+
+
+def _stop_message(state, stops):
+    """Why the run stops, naming the body, with the remedy: a time step for its speed, or that no step helps."""
+    cause, body, other, overlap, size = stops[0]
+    name, other_name = _describe(state, body), _describe(state, other)
+    both_sized = other in state.body_ids or bool(_tag(f"sphere.{other}"))
+    unit = _size_name(state, body) if not both_sized or _size_name(state, body) == _size_name(state, other) else "size"
+    if cause == "crossed":
+        what = (f"the centre of {name} has passed through {other_name} since the last step (their bounds overlapped "
+                "then), and the contact now pushes it on through")
+    else:
+        what = (f"{name} overlaps {other_name} by {overlap:.3g} m ({overlap / size:.2f} "
+                f"{'of the smaller ' + unit if both_sized else unit}, {unit} = {size:.3g} m) and the overlap grows: "
+                f"past {state.options['stop_overlap']:g} {unit} (rm.engine(stop_overlap=...)) the contact no longer "
+                "describes it")
+    speed = _relative_speed(body, other)
+    own = _size_name(state, body)
+    own_size = size if not both_sized else None
+    if speed > 0:
+        bound = state.stability(speed)[0]
+        moves = f"{speed * O.dt / own_size:.2g} {own}" if own_size else f"{speed * O.dt:.3g} m"
+        if O.dt > bound:
+            advice = (f"At {speed:.3g} m/s it moves {moves} per step (O.dt = {O.dt:.3g} s): reduce O.dt to "
+                      f"rm.critical_timestep(impact_speed={speed:.3g}) = {bound:.3g} s or less and start again from a "
+                      "state before the impact (rm.checkpoint)")
+        else:
+            advice = (f"O.dt = {O.dt:.3g} s is already within rm.critical_timestep(impact_speed={speed:.3g}) = "
+                      f"{bound:.3g} s: no smaller step helps, the contact cannot hold these bodies apart (an impact "
+                      "too fast, or a load too large, for such soft materials)")
+    else:
+        advice = "The bodies are at rest: the contact cannot hold them apart (a load too large for such soft materials)"
+    more = ""
+    if len(stops) > 1:
+        others = [f"{_describe(state, b)} with {_describe(state, o)}" for _, b, o, _, _ in stops[1:4]]
+        more = f" Also: {'; '.join(others)}{'; ...' if len(stops) > 4 else ''}."
+    return f"{what}. {advice}.{more}"
+
+
+def _warn_fast_bodies(state):
+    """Warns, once per run, of a body that moved more than FAST_STEP of its contact depth in the last step."""
+    if state.warned_fast:
+        return
+    body, speed, fraction, depth = state.engine.fastest()
+    if not fraction > FAST_STEP:
+        return
+    state.warned_fast = True
+    bound = state.stability(speed)[0]
+    warnings.warn(f"roundedmesh: {_describe(state, body)} moves {fraction:.2g} of its contact depth ({depth:.3g} m, "
+                  f"0.1 {_size_name(state, body)}) in one step at {speed:.3g} m/s with O.dt = {O.dt:.3g} s: an impact "
+                  f"at this speed is not resolved; use O.dt <= rm.critical_timestep(impact_speed={speed:.3g}) = "
+                  f"{bound:.3g} s", RuntimeWarning)
 
 
 def keep_triangle_forces(keep=True):

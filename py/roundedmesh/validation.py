@@ -20,11 +20,11 @@ S5 -- non-spherical curvature (Section 3.2):
     cylinder_mesh(nodes), cylinder_pair("crossed" | "parallel", nodes, poses, seed) -> CylinderSweep (Fig. 8)
     linear_fit(overlaps, forces) -> (slope [N/m], intercept [N]), power_law_exponent(overlaps, forces)
 
-The engine finds triangle pairs only down to an overlap of DEEPEST_OVERLAP times the smaller body's volume-
-equivalent radius (kDeepestOverlap, pkg/engine/ContactModel.hpp): search_limit(mesh1, mesh2) [m], none against
-an analytic sphere. Sweeps that go deeper (S5 spheroids of ratio >= 2.5 at 7.5 % of a) may lose their deepest
-pairs, so every sweep also reports its errors over the overlaps within that limit (`in_range`,
-`errors_in_range`).
+Hertz is meant to hold down to an overlap of DEEPEST_OVERLAP times the smaller body's volume-equivalent radius
+(kDeepestOverlap, pkg/engine/ContactModel.hpp): search_limit(mesh1, mesh2) [m]. The engine's triangle pair search
+once stopped there; it no longer does (doc/physics.md, "Which triangle pairs touch"), but sweeps that go deeper (S5
+spheroids of ratio >= 2.5 at 7.5 % of a) still also report their errors over the overlaps within it (`in_range`,
+`errors_in_range`), as the tables of doc/validation.md were made.
 
 Every sweep holds the overlaps [m], the model forces per pose [N] (one row per pose) and the analytic
 references [N]; NRMSE is analytic.nrmse per pose. Meshes are cached: build them once per process.
@@ -361,3 +361,4 @@ def cylinder_pair(arrangement, nodes=2562, poses=3, seed=1, **engine_options):
     return CylinderSweep(CYLINDER_OVERLAPS, np.array(forces), reference, search_limit(mesh, mesh),
                          arrangement=arrangement,
                          nodes=len(mesh.vertices), reference_slope=math.pi / 4 * PAIR_MODULUS * CYLINDER_LENGTH)
+

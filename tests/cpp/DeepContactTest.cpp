@@ -113,6 +113,42 @@ TEST(DeepContact, GummyBearsKeepEveryContact) {
   }
 }
 
+// Two gummy bears pressed along their line of centres from first touch to half a volume-equivalent radius, in 12
+// random orientations: at every depth the pair resolved on its own finds what brute force finds. A list grown by
+// half the deepest contact per pass missed pairs that the criterion accepts much deeper than the others at once (a
+// segment through both bodies at a slant: 22 mm where the rest reached 12 mm), in 11 of 40 orientations; a pair
+// past the Hertz range now holds every pair it can have (RoundedMeshEngine.cpp, deepestPossible).
+TEST(DeepContact, GummyBearsPressedToHalfARadiusLoseNoPair) {
+  const RecordedScene scene = loadRecordedScene();
+  ContactModel model;
+  model.bodies = {scene.model.bodies[0], scene.model.bodies[1]};
+  const Real r = model.bodies[0].equivalentRadius;
+  std::mt19937 rng(11);
+  std::normal_distribution<Real> normal;
+  for (int trial = 0; trial < 12; ++trial) {
+    const Quaternionr q1 = Quaternionr(normal(rng), normal(rng), normal(rng), normal(rng)).normalized();
+    const Quaternionr q2 = Quaternionr(normal(rng), normal(rng), normal(rng), normal(rng)).normalized();
+    const Vector3r axis = Vector3r(normal(rng), normal(rng), normal(rng)).normalized();
+    auto placed = [&](Real distance) {
+      ContactData data;
+      data.resize(model);
+      data.bodyStates = {at(Vector3r::Zero(), q1), at(distance * axis, q2)};
+      return data;
+    };
+    Real far = 0.15, near = 0;  // first touch, by bisection
+    for (int i = 0; i < 50; ++i) {
+      const Real middle = 0.5 * (far + near);
+      std::vector<PressureGeom> geoms;
+      ContactStatistics statistics;
+      pairGeometry(model, placed(middle), {0, 1}, geoms, statistics);
+      (geoms.empty() ? far : near) = middle;
+    }
+    for (Real overlap : {0.1, 0.2, 0.3, 0.4, 0.45, 0.5})
+      expectBruteForceContacts(model, placed(far - overlap * r),
+                               "trial " + std::to_string(trial) + ", overlap " + std::to_string(overlap) + " r_eq");
+  }
+}
+
 // In the recorded S1 packing, Appendix B alone accepts triangle pairs of bears 0 and 1 (whose real contacts are
 // at most 1.5 mm deep) with effective overlaps above 15 mm; the criterion rejects every pair deeper than
 // 0.1 r_eq there and keeps every shallower one.
