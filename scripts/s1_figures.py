@@ -105,9 +105,7 @@ def drawn_mesh(run, radius):
     if run == "sphere":
         mesh = rm.Mesh.icosphere(radius, 3)
     elif run.startswith("icosphere"):
-        k = {"icosphere12": 0, "icosphere42": 1, "icosphere162": 2}[run]
-        scale = (4 / 3 * math.pi * radius ** 3 / rm.Mesh.icosphere(radius, k).volume) ** (1 / 3)
-        mesh = rm.Mesh.icosphere(radius * scale, k)
+        mesh = rm.Mesh.icosphere(radius, {"icosphere12": 0, "icosphere42": 1, "icosphere162": 2}[run])
     else:
         mesh = rm.Mesh.reference_shape("gummy_bear" if run.startswith("gummy_bear") else run)
     return np.asarray(mesh.vertices), np.asarray(mesh.triangles)

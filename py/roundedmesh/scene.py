@@ -724,11 +724,11 @@ def _warn_deep_overlaps(state):
     """Warns, after the first step of a scene's engine (and after every change of its bodies or partners), of the
     pairs that overlap by more than DEEP_OVERLAP of the smaller body's volume-equivalent radius."""
     found = contacts()
-    meshes = rounded_bodies()
+    radius = {i: _equivalent_radius(mesh.volume) for i, mesh in rounded_bodies().items()}
+    radius.update(sphere_bodies())
     deep = []
     for id1, id2, overlap in zip(found["id1"], found["id2"], found["overlap"]):
-        radii = [_equivalent_radius(meshes[int(i)].volume) for i in (id1, id2) if int(i) in meshes]
-        fraction = overlap / min(radii)
+        fraction = overlap / min(radius[int(i)] for i in (id1, id2) if int(i) in radius)
         if fraction > DEEP_OVERLAP:
             deep.append((fraction, int(id1), int(id2), overlap))
     if not deep:

@@ -53,6 +53,18 @@ def test_two_copies_of_one_mesh_at_one_place():
     assert pairs[0][2] > 0.1
 
 
+# Sphere bodies count with their radius: two of radius R with centres R apart overlap by R, 1.0 r_eq; a third
+# touching the second by 0.05 R is not named.
+def test_sphere_bodies_overlapping_at_the_start():
+    first = rm.add_sphere((0, 0, 1), R, RUBBER)
+    second = rm.add_sphere((R, 0, 1), R, RUBBER)
+    rm.add_sphere((2.95 * R, 0, 1), R, RUBBER)
+    with pytest.warns(RuntimeWarning, match="start overlapped") as record:
+        run_first_step()
+    ((a, b, fraction),) = warned_overlaps(record)
+    assert (a, b) == (first, second) and fraction == pytest.approx(1.0, abs=0.005)  # printed with two decimals
+
+
 def test_only_on_the_first_step_and_not_for_a_resting_body():
     ball = rm.add_body(rm.Mesh.icosphere(R, 2), pos=(0, 0, R - 0.0015), material=RUBBER)  # 0.075 r_eq: no warning
     wall = O.bodies.append(utils.wall(0, axis=2, sense=1))

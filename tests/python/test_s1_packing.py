@@ -57,7 +57,7 @@ def test_a_short_run_writes_every_output_and_keeps_the_bodies_in_the_box(tmp_pat
     points = arrays["Points"]
     assert (np.abs(points[:, :2]) < 0.20).all() and (points[:, 2] > float(height[-1]["box_z_m"])).all()
 
-    # Eq. 28 with the volume of a sphere of radius 0.025 m: the icosphere is scaled to it
+    # Eq. 28 with the volume of a sphere of radius 0.025 m: the icosphere's rounded body is that sphere
     packing = rows(folder / "packing.csv")
     assert [float(r["h_m"]) for r in packing] == [round(0.01 * k, 2) for k in range(1, 31)]
     for r in packing:
@@ -101,6 +101,21 @@ def test_the_box_shakes_for_three_periods_then_stands_still(tmp_path):
     datasets = ElementTree.parse(folder / "vtk" / "icosphere12.pvd").getroot().findall("Collection/DataSet")
     assert [(round(float(d.get("timestep")), 9), d.get("file")) for d in datasets] == \
         [(round(0.2 * k, 9), f"icosphere12_{400 * k:08d}.vtp") for k in (1, 2, 3, 4)]
+
+
+# Perfect spheres are sphere bodies (rm.add_sphere): roundedmesh's engine computes their contacts with the floor
+# (Eq. 7). The 4 spheres of the bottom layer meet the rising floor at 0.045 s, are thrown up, land again at 0.18 s
+# and ride the floor through its lowest point; at 0.25 s, the floor rising, all 4 press on it (measured: centres
+# 24.6 mm above it, an overlap of 0.4 mm where a resting sphere has 0.3 mm), and the ParaView series has them as
+# spheres (part 1).
+def test_perfect_spheres_rest_on_the_floor_through_roundedmesh(tmp_path):
+    out = run("--shape", "sphere", "--count", "4", "--duration", "0.25", "--frames", "1", "--output", str(tmp_path))
+    assert out.returncode == 0, out.stdout + out.stderr
+    last = rows(tmp_path / "sphere" / "height.csv")[-1]
+    assert int(last["bodies"]) == 4 and int(last["outside"]) == 0 and int(last["contacts"]) == 4, last
+    assert abs(float(last["mean_height_m"]) - float(last["box_z_m"]) - 0.025) < 0.001  # on the floor
+    datasets = ElementTree.parse(tmp_path / "sphere" / "vtk" / "sphere.pvd").getroot().findall("Collection/DataSet")
+    assert sorted(d.get("part") for d in datasets) == ["0", "1"]
 
 
 # One step of 4 gummy bears, as rounded bodies and as YADE's 40-sphere clumps: every representation starts from
