@@ -328,12 +328,14 @@ struct ContactShare {
 void viscousFriction(const std::vector<PressureGeom>& geoms, const std::vector<ContactShare>& shares,
                      const HertzPhys& phys, const Matrix3r& toGlobal, Wrench& local, PairResult& result,
                      TriangleContact* listed) {
+  thread_local std::vector<Real> fraction;
+  fraction.resize(geoms.size());
   Real fractions = 0;
-  for (const PressureGeom& geom : geoms) fractions += circleFraction(geom);
+  for (size_t k = 0; k < geoms.size(); ++k) fractions += fraction[k] = circleFraction(geoms[k]);
   for (size_t k = 0; k < geoms.size(); ++k) {
     const PressureGeom& geom = geoms[k];
     const TangentialLoad friction =
-        coulombFriction(geom, shares[k].load, phys, fractions > 0 ? circleFraction(geom) / fractions : 0);
+        coulombFriction(geom, shares[k].load, phys, fractions > 0 ? fraction[k] / fractions : 0);
     const Vector3r point = planePoint(geom, geom.effectivePoint);
     local.force -= friction.force;
     local.torque -= point.cross(friction.force);
@@ -466,6 +468,13 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   summary.point = s1.position + toGlobal * centre;
   summary.normal = toGlobal * normal;
   TriangleContact* listed = contacts ? contacts->data() + listedFrom : nullptr;
+  if (!(phys.friction > 0) || model.friction == FrictionLaw::Viscous) {
+    // No spring: frictionless now (a material changed), or the viscous law.
+    if (spring && spring->active()) {
+      if (data.timeStep > 0) summary.frictionPower += spring->energy / data.timeStep;
+      *spring = TangentialSpring();
+    }
+  }
   if (phys.friction > 0) {
     if (model.friction == FrictionLaw::Viscous) {
       viscousFriction(geoms, shares, phys, toGlobal, local, result, listed);

@@ -54,9 +54,14 @@ PairResult resolveSpherePair(const ContactModel& model, const ContactData& data,
   const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, whole);
   result.summary.add(geom, load);
   TangentialLoad friction;
+  if ((!(phys.friction > 0) || model.friction == FrictionLaw::Viscous) && spring && spring->active()) {
+    // No spring: frictionless now (a material changed), or the viscous law.
+    if (data.timeStep > 0) result.summary.frictionPower += spring->energy / data.timeStep;
+    *spring = TangentialSpring();
+  }
   if (model.friction == FrictionLaw::Viscous) {
     friction = coulombFriction(geom, load, phys);
-    result.summary.frictionPower = -friction.force.dot(geom.slip);
+    result.summary.frictionPower += -friction.force.dot(geom.slip);
   } else if (phys.friction > 0) {
     // One contact point: the spring at c, without twist.
     SpringContact contact;
@@ -70,7 +75,7 @@ PairResult resolveSpherePair(const ContactModel& model, const ContactData& data,
     TangentialSpring& held = spring ? *spring : fresh;
     const SpringLoad spun = tangentialSpring(contact, phys, spring ? data.timeStep : 0, held);
     friction = {spun.force, spun.sliding};
-    result.summary.frictionPower = spun.dissipatedPower;
+    result.summary.frictionPower += spun.dissipatedPower;
     result.summary.elasticEnergy += held.energy;
   }
   result.statistics.slidingContacts = friction.sliding;

@@ -397,7 +397,8 @@ def statistics():
                                rounded body counts here: the rounded body's triangles meet the sphere)
       sphere_contacts          contacts of a sphere body with another sphere body or a partner, one per pair
                                (the whole contact circle: no triangles, so not in candidates or rejected_*)
-      sliding_contacts         triangle and sphere contacts sliding (Eq. 21)
+      sliding_contacts         triangle and sphere contacts sliding: all of a pair's whose spring slides (under the
+                               viscous law, each by Eq. 21)
       neighbour_rebuilds       whether the broad phase's neighbour list was rebuilt (0 or 1)
       candidate_rebuilds       pairs whose candidate triangle pairs were rebuilt (from their near list)
       near_rebuilds            pairs whose near list was searched again in the triangle trees
@@ -426,7 +427,8 @@ def contacts():
       overlap             the deepest effective overlap of its triangle contacts [m] (delta_eff, Eq. B.4)
       triangle_contacts   number of triangle contacts (1 for a sphere body against a sphere body or a partner:
                           one contact over the whole circle)
-      sliding             whether any of them slides (Eq. 21)
+      sliding             whether the pair's tangential spring slides (under the viscous law: whether any of
+                          its triangle contacts does, Eq. 21)
     A pair's forces are the sums of its triangle contacts', normal and tangential (friction)."""
     state = _current_state()
     if state is None or state.stepped_iteration is None:

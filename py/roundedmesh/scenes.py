@@ -98,9 +98,10 @@ def trace_height(body_id, duration, label=None):
 class FrictionRamp:
     """Scene S4 (ours where scenes.md is silent): S1's particle resting on a Wall under gravity, its rotations
     blocked so that it can only slide (the Coulomb law of Eq. 18 is the one of a sliding block), pushed along
-    x at its centre by a force rising linearly from 0 to 1.5 mu m g. The tangential damping c makes the slip
-    at the onset of sliding mu m g / c = 6 mm/s, and the ramp is slow enough that inertia (m dv/dt) stays
-    below 1 % of mu m g before sliding."""
+    x at its centre by a force rising linearly from 0 to 1.5 mu m g. With the default tangential spring the
+    sphere stands until the push reaches mu m g (its spring stretching by 0.13 mm), then slides; c damps the
+    spring. Under the paper's viscous law (engine(friction='viscous')) c makes the slip at the onset of sliding
+    mu m g / c = 6 mm/s. The ramp is slow enough that inertia (m dv/dt) stays below 1 % of mu m g before sliding."""
     radius: float = 0.025           # [m]
     gravity: float = 9.81           # [m/s^2]
     friction: float = 0.5
@@ -116,11 +117,11 @@ class FrictionRamp:
 S4 = FrictionRamp()
 
 
-def friction_ramp(subdivisions, scene=S4, label=None):
-    """Runs S4 with an icosphere of `subdivisions` (2, 3: 162, 642 nodes). Returns a dict of arrays over the
-    ramp's steps: time [s], applied force F_A [N], friction force F_t on the sphere (x component of the
-    contact force, opposing F_A) [N], sphere displacement along x [m], sliding triangle contacts, and
-    f_max = mu m g [N]."""
+def friction_ramp(subdivisions, scene=S4, label=None, law="spring"):
+    """Runs S4 with an icosphere of `subdivisions` (2, 3: 162, 642 nodes) under the friction law `law` ('spring' or
+    'viscous'). Returns a dict of arrays over the ramp's steps: time [s], applied force F_A [N], friction force F_t
+    on the sphere (x component of the contact force, opposing F_A) [N], sphere displacement along x [m], sliding
+    triangle contacts, and f_max = mu m g [N]."""
     O.reset()
     mesh = Mesh.icosphere(scene.radius, subdivisions)
     mass = scene.particle.density * mesh.volume
@@ -133,8 +134,8 @@ def friction_ramp(subdivisions, scene=S4, label=None):
     f_max = scene.friction * mass * scene.gravity
     rate = 1.5 * f_max / scene.ramp_time
     push = f"max(O.time - {scene.settle_time!r}, 0.0) * {rate!r}"  # F_A(t) [N], evaluated by YADE each step
-    O.engines = [ForceResetter(), engine(), PyRunner(command=f"O.forces.addF({sphere}, ({push}, 0, 0))", iterPeriod=1,
-                                                     initRun=True),
+    O.engines = [ForceResetter(), engine(friction=law),
+                 PyRunner(command=f"O.forces.addF({sphere}, ({push}, 0, 0))", iterPeriod=1, initRun=True),
                  NewtonIntegrator(gravity=(0, 0, -scene.gravity), damping=0)]
     O.dt = scene.timestep
     settle = int(round(scene.settle_time / O.dt))
@@ -185,10 +186,11 @@ SLOPE = SlopeScene()
 SLOPE_POSES = {"gummy_bear": (Quaternion.Identity, ""), "pear": (Quaternion((0, 0, 1), math.pi), "X")}
 
 
-def build_slope(shape, angle=None, scene=SLOPE, friction="spring", **material_changes):
+def build_slope(shape, angle=None, scene=SLOPE, law="spring", blocked=None, **material_changes):
     """Resets YADE and builds the slope scene with `shape` ('gummy_bear' or 'pear', in its SLOPE_POSES pose) at
-    `angle` [degrees] (default scene.angle) under the engine's friction law `friction`. material_changes (friction,
-    tangential_damping, ...) replace those of both materials. Returns the body's id."""
+    `angle` [degrees] (default scene.angle) under the engine's friction law `law` ('spring' or 'viscous').
+    `blocked`: YADE's blockedDOFs of the body, if not the pose's. material_changes (friction, tangential_damping, ...)
+    replace those of both materials. Returns the body's id."""
     O.reset()
     angle = scene.angle if angle is None else angle
     materials = []
@@ -197,15 +199,15 @@ def build_slope(shape, angle=None, scene=SLOPE, friction="spring", **material_ch
                       tangential_damping=m.tangential_damping)
         values.update(material_changes)
         materials.append(HertzMaterial(**values))
-    ori, blocked = SLOPE_POSES[shape]
+    ori, pose_blocked = SLOPE_POSES[shape]
     mesh = reference_shape(shape)
     lowest = min((ori * Vector3(*x))[2] for x in mesh.vertices)
     body = add_body(mesh, pos=(0, 0, scene.gap - lowest), ori=ori, material=materials[0])
-    O.bodies[body].state.blockedDOFs = blocked
+    O.bodies[body].state.blockedDOFs = pose_blocked if blocked is None else blocked
     floor = O.bodies.append(utils.wall(0, axis=2, sense=1))
     assign_material(floor, materials[1])
     a = math.radians(angle)
-    O.engines = [ForceResetter(), engine(friction=friction),
+    O.engines = [ForceResetter(), engine(friction=law),
                  NewtonIntegrator(gravity=(scene.gravity * math.sin(a), 0, -scene.gravity * math.cos(a)), damping=0)]
     O.dt = scene.timestep_fraction * critical_timestep()
     return body

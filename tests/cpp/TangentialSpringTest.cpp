@@ -185,6 +185,30 @@ TEST(TangentialSpringInEngine, StiffnessIsMindlinsForAMeshedSphere) {
   EXPECT_NEAR(data.bodyWrenches[0].force.x(), 0, 1e-12 * data.bodyWrenches[0].force.z());
 }
 
+// A sphere body on a Wall: one contact circle, so the spring's stiffness is Mindlin's 8 G* a exactly, from the
+// Hertz stiffness 2 E* a of Eq. 7 (the direct regime over the whole circle). Tolerance: round-off.
+TEST(TangentialSpringInEngine, SphereBodyStiffnessIsMindlins) {
+  const Real radius = 0.01, overlap = 2e-4, dt = 1e-5, speed = 3e-3;
+  ContactModel model;
+  model.partners.push_back({0, Sphere{radius}, kSoft, true});
+  model.partners.push_back({1, Wall{2, 1}, kHard, false});
+  ContactData data;
+  data.resize(model);
+  data.timeStep = dt;
+  data.partnerStates[0] = test::at(Vector3r(0, 0, radius - overlap));
+  data.partnerStates[0].velocity = Vector3r(0, speed, 0);
+  data.partnerStates[1] = test::at(Vector3r::Zero());
+  const Real stiffness = 8 * std::sqrt(radius * overlap) / (kSoft.shearCompliance() + kHard.shearCompliance());
+  for (int n = 1; n <= 4; ++n) {
+    RoundedMeshEngine(model, data);
+    const Wrench& onSphere = data.partnerWrenches[0];
+    EXPECT_NEAR(onSphere.force.y(), -stiffness * n * dt * speed, 1e-10 * stiffness * n * dt * speed) << n;
+    EXPECT_NEAR(onSphere.force.x(), 0, 1e-14);
+    // At the contact point, (r - delta) below the centre: the moment turns the sphere.
+    EXPECT_NEAR(onSphere.torque.x(), (radius - overlap) * onSphere.force.y(), 1e-12 * std::abs(onSphere.force.y()) * radius);
+  }
+}
+
 // Pairs of rounded bodies against each other and against a Box, sliding and turning: a run whose springs are saved
 // (activeSprings) and restored into new data mid-way goes on bit for bit as the uninterrupted run.
 TEST(TangentialSpringInEngine, SavedAndRestoredSpringsContinueBitForBit) {
@@ -239,6 +263,35 @@ TEST(TangentialSpringInEngine, SavedAndRestoredSpringsContinueBitForBit) {
   std::vector<Wrench> fresh;
   runFrom(restarted, 20, 21, fresh);
   EXPECT_NE(fresh[0].force, uninterrupted[3 * 20].force);
+}
+
+// The triangle contacts' shares of the spring's load (listed for rm.triangle_contacts and the export) sum, with their
+// normal forces, to the force on the pair, and each stays within its own Coulomb limit mu Fn_i. Bodies pressed
+// together, sliding and spinning, some steps in. Tolerance: round-off.
+TEST(TangentialSpringInEngine, TriangleSharesSumToThePairsForce) {
+  const BodyMesh mesh(icosphere(0.02, 3));
+  ContactModel model;
+  for (int b = 0; b < 2; ++b) model.bodies.push_back(roundedBody(b, mesh, kSoft));
+  ContactData data;
+  data.resize(model);
+  data.timeStep = 1e-4;
+  data.keepTriangleContacts = true;
+  data.bodyStates[0] = test::at(Vector3r::Zero());
+  data.bodyStates[1] = test::at(Vector3r(0.0395, 0.002, 0.001), Quaternionr(Eigen::AngleAxis<Real>(0.7, Vector3r(1, 2, 3).normalized())));
+  data.bodyStates[1].velocity = Vector3r(0, 0.01, 0.002);
+  data.bodyStates[1].angularVelocity = Vector3r(3, 0, 0);
+  for (int n = 0; n < 5; ++n) RoundedMeshEngine(model, data);
+  ASSERT_EQ(data.pairs.size(), 1u);
+  const std::vector<TriangleContact>& contacts = data.pairContacts[0];
+  ASSERT_GT(contacts.size(), 3u);
+  Vector3r onOther = Vector3r::Zero(), friction = Vector3r::Zero();
+  for (const TriangleContact& c : contacts) {
+    onOther += c.load.force * c.normal + c.friction.force;
+    friction += c.friction.force;
+    EXPECT_LE(c.friction.force.norm(), 0.5 * c.load.force * (1 + 1e-12));
+  }
+  ASSERT_GT(friction.norm(), 1e-3 * data.pairResults[0].onOther.force.norm());
+  EXPECT_LT((onOther - data.pairResults[0].onOther.force).norm(), 1e-12 * onOther.norm());
 }
 
 // The stability limit with friction is the smaller of the normal contact's and the tangential one's: for a sphere,

@@ -48,10 +48,10 @@ def bodies_in_a_box(steps):
 
 @pytest.fixture(scope="module")
 def packed():
-    """The scene after 1,800 steps (0.25 s): the bear has landed on the spheres, which press on the floor, on
-    the walls and on each other. Returned as (bodies, walls, contacts, forces and torques on every body)."""
+    """The scene after 2,700 steps (0.37 s): the bear has landed on a sphere, and the spheres press on the floor and
+    one on a side wall. Returned as (bodies, walls, contacts, forces and torques on every body)."""
     O.reset()
-    bodies, walls = bodies_in_a_box(1800)
+    bodies, walls = bodies_in_a_box(2700)
     found = rm.contacts()
     wrenches = {b.id: (np.array(O.forces.f(b.id)), np.array(O.forces.t(b.id))) for b in O.bodies}
     states = dict(_states)
