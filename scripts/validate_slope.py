@@ -59,9 +59,9 @@ def build(shape, angle, law, blocked=None, **changes):
     O.reset()
     scene = SlopeScene()
     poses = {"gummy_bear": (Quaternion.Identity, ""), "pear": (Quaternion((0, 0, 1), math.pi), "X")}
-    values = lambda m: dict(young=m[0], poisson=m[1], density=2000, damping=1e-2, friction=0.5, tangential_damping=100.0)
-    particle = rm.HertzMaterial(**{**values((1e6, 0.4)), **changes})
-    floor_material = rm.HertzMaterial(**{**values((5e6, 0.4)), **changes})
+    values = dict(poisson=0.4, density=2000, damping=1e-2, friction=0.5, tangential_damping=100.0)
+    particle = rm.HertzMaterial(**{**values, "young": 1e6, **changes})
+    floor_material = rm.HertzMaterial(**{**values, "young": 5e6, **changes})
     ori, pose_blocked = poses[shape]
     mesh = rm.Mesh.reference_shape(shape)
     lowest = min((ori * Vector3(*x))[2] for x in mesh.vertices)
@@ -69,7 +69,8 @@ def build(shape, angle, law, blocked=None, **changes):
     O.bodies[body].state.blockedDOFs = pose_blocked if blocked is None else blocked
     rm.assign_material(O.bodies.append(utils.wall(0, axis=2, sense=1)), floor_material)
     a = math.radians(angle)
-    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(G * math.sin(a), 0, -G * math.cos(a)), damping=0)]
+    O.engines = [ForceResetter(), rm.engine(),
+                 NewtonIntegrator(gravity=(G * math.sin(a), 0, -G * math.cos(a)), damping=0)]
     # The old limit knew nothing of c: c dt / m_t must stay below 2 (m_t about m / 8 for the bear) for the viscous
     # force to be stable, which 0.1 of it (2.2e-4 s) keeps, 0.5 does not.
     O.dt = 0.1 * rm.critical_timestep()
@@ -141,7 +142,8 @@ def slide(output):
                 r = math.radians(angle)
                 coulomb = G * (math.sin(r) - 0.5 * math.cos(r))
                 rows.append([shape, law, angle, a, coulomb])
-                lines.append(f"{shape:10s}  {law:8s}  {angle:5.1f}  {a:9.4f}  {coulomb:7.4f}  {100 * (a / coulomb - 1):8.3f}")
+                lines.append(f"{shape:10s}  {law:8s}  {angle:5.1f}  {a:9.4f}  {coulomb:7.4f}  "
+                             f"{100 * (a / coulomb - 1):8.3f}")
             _log(f"slide: {shape} {law} done")
     _write_csv(os.path.join(output, "slope_slide.csv"), ["shape", "law", "angle_deg", "acceleration", "coulomb"], rows)
     figure, axis = plt.subplots(figsize=(6, 4.5))

@@ -29,7 +29,9 @@ void ContactData::resize(const ContactModel& model) {
 
 namespace {
 
-bool pairBefore(const BodyPair& a, const BodyPair& b) { return a.body < b.body || (a.body == b.body && a.other < b.other); }
+bool pairBefore(const BodyPair& a, const BodyPair& b) {
+  return a.body < b.body || (a.body == b.body && a.other < b.other);
+}
 
 }  // namespace
 

@@ -1,8 +1,8 @@
 // What the contact engine knows that does not change from step to step: the rounded bodies with their
 // meshes and materials, the rigid-shaped partners (planes, YADE Walls, Boxes, Facets and Spheres) with
-// theirs, the options of the pressure law and the friction law. A partner may be a sphere body (rm.add_sphere), the engine's
-// second kind of body: an analytic Sphere whose contacts with the other partners the engine computes too. Indices into `bodies` and `partners` are the engine's; `id`
-// is YADE's body id.
+// theirs, the options of the pressure law and the friction law. A partner may be a sphere body (rm.add_sphere), the
+// engine's second kind of body: an analytic Sphere whose contacts with the other partners the engine computes too.
+// Indices into `bodies` and `partners` are the engine's; `id` is YADE's body id.
 #pragma once
 
 #include <memory>

@@ -79,7 +79,8 @@ Real partnerRadius(const PartnerShape& shape) {
 
 // The farthest a partner's contact point can be from its position; 0 for a Wall or Plane (no finite lever).
 Real partnerReach(const PartnerShape& shape) {
-  return std::visit(Overloaded{[](const Sphere& s) { return s.radius; }, [](const Box& b) { return b.halfExtents.norm(); },
+  return std::visit(Overloaded{[](const Sphere& s) { return s.radius; },
+                               [](const Box& b) { return b.halfExtents.norm(); },
                                [](const Facet& f) {
                                  Real reach = 0;
                                  for (const Vector3r& x : f.vertices) reach = std::max(reach, x.norm());
@@ -103,7 +104,8 @@ StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>
   for (int b = 0; b < bodyCount && !bodyInertias.empty(); ++b) {
     // Bodies sharing a mesh and inertia (the usual case) share the sweep over its vertices.
     int same = 0;
-    while (same < b && !(model.bodies[same].mesh == model.bodies[b].mesh && bodyInertias[same] == bodyInertias[b])) ++same;
+    while (same < b && !(model.bodies[same].mesh == model.bodies[b].mesh && bodyInertias[same] == bodyInertias[b]))
+      ++same;
     levers[b] = same < b ? levers[same] : meshLever(*model.bodies[b].mesh, bodyInertias[b]);
   }
   for (int p = 0; p < count - bodyCount && !partnerInertias.empty(); ++p) {

@@ -27,7 +27,8 @@ inline Real leapFrogLimit(Real mass, Real stiffness, Real damping) {
   return 2 / omega * (std::sqrt(1 + zeta * zeta) - zeta);
 }
 
-// The normal contact. Inputs: mass m [kg] (the reduced mass of the pair), E* [Pa], R* [m], A [s], delta [m]. Output [s].
+// The normal contact. Inputs: mass m [kg] (the reduced mass of the pair), E* [Pa], R* [m], A [s], delta [m].
+// Output [s].
 inline Real criticalTimeStep(Real mass, Real effectiveModulus, Real radius, Real damping, Real overlap) {
   const Real stiffness = 2 * effectiveModulus * std::sqrt(radius * overlap);
   return leapFrogLimit(mass, stiffness, 2.0 / 3.0 * damping * stiffness);

@@ -389,7 +389,8 @@ void springFriction(const std::vector<ContactShare>& shares, Real normalForce, R
       const Real w = normalForce > 0 ? shares[k].load.force / normalForce : 0;
       Vector3r r = shares[k].point - centre;
       r -= r.dot(normal) * normal;
-      const Vector3r twist = polar > 0 ? Vector3r(load.torque / polar * contact.normal.cross(toGlobal * r)) : Vector3r::Zero();
+      const Vector3r twist =
+          polar > 0 ? Vector3r(load.torque / polar * contact.normal.cross(toGlobal * r)) : Vector3r::Zero();
       listed[k].friction = {w * (load.force + twist), load.sliding};
     }
   }
@@ -439,7 +440,8 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     addNodeForcesToBody(x, forces, geom.normal, local);
     const Vector3r point = planePoint(geom, geom.effectivePoint);
     // Fn acts at c + (-Mn_y, Mn_x) / Fn (NodeForces.hpp), so Fn times that point needs no division.
-    const Vector3r weighted = load.force * geom.centre - load.moment.y() * geom.tangent1 + load.moment.x() * geom.tangent2;
+    const Vector3r weighted =
+        load.force * geom.centre - load.moment.y() * geom.tangent1 + load.moment.x() * geom.tangent2;
     moment += weighted;
     normalForce += load.force;
     normals += load.force * geom.normal;

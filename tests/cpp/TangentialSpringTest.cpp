@@ -205,7 +205,8 @@ TEST(TangentialSpringInEngine, SphereBodyStiffnessIsMindlins) {
     EXPECT_NEAR(onSphere.force.y(), -stiffness * n * dt * speed, 1e-10 * stiffness * n * dt * speed) << n;
     EXPECT_NEAR(onSphere.force.x(), 0, 1e-14);
     // At the contact point, (r - delta) below the centre: the moment turns the sphere.
-    EXPECT_NEAR(onSphere.torque.x(), (radius - overlap) * onSphere.force.y(), 1e-12 * std::abs(onSphere.force.y()) * radius);
+    EXPECT_NEAR(onSphere.torque.x(), (radius - overlap) * onSphere.force.y(),
+                1e-12 * std::abs(onSphere.force.y()) * radius);
   }
 }
 
@@ -277,7 +278,8 @@ TEST(TangentialSpringInEngine, TriangleSharesSumToThePairsForce) {
   data.timeStep = 1e-4;
   data.keepTriangleContacts = true;
   data.bodyStates[0] = test::at(Vector3r::Zero());
-  data.bodyStates[1] = test::at(Vector3r(0.0395, 0.002, 0.001), Quaternionr(Eigen::AngleAxis<Real>(0.7, Vector3r(1, 2, 3).normalized())));
+  data.bodyStates[1] = test::at(Vector3r(0.0395, 0.002, 0.001),
+                                Quaternionr(Eigen::AngleAxis<Real>(0.7, Vector3r(1, 2, 3).normalized())));
   data.bodyStates[1].velocity = Vector3r(0, 0.01, 0.002);
   data.bodyStates[1].angularVelocity = Vector3r(3, 0, 0);
   for (int n = 0; n < 5; ++n) RoundedMeshEngine(model, data);
