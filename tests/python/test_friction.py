@@ -41,7 +41,7 @@ def test_a_body_rests_on_a_slope_below_the_friction_angle(shape, settle):
 
 # The paper's viscous law (kept as an option) has no force without slip: the bear creeps down at the speed at which
 # c v carries the weight's component along the slope, m g sin(5 deg) / c = 1.12 mm/s (measured 1.07 mm/s over 10 s;
-# with the paper's own circle fractions, which summed to several times 1 for the bear lying there, it crept at
+# with the paper's own circle fractions, which summed to about 2.7 for the bear lying there, it crept at
 # 0.24-0.40 mm/s, the 0.19-0.31). Tolerance 10 %.
 def test_the_viscous_law_creeps_on_the_slope():
     drift = settled_drift("gummy_bear", settle=0.5, window=0.5, law="viscous")
