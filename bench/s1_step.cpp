@@ -1,11 +1,13 @@
 // Google Benchmark of the complete C++ contact step on scene S1 with 250 gummy bears (bench/data, recorded
 // by scripts/record_s1_scene.py), without YADE or Python, and of its two per-contact stages alone:
-//   BM_S1Step/threads/motion/skin/steps/near   one RoundedMeshEngine step; motion = 0: the settled packing
-//                              again and again (the lists kept between steps stay valid), 1: the recorded steps
-//                              of shaking in order, forth and back (the lists are rebuilt as the bodies move),
-//                              2: the recorded steps of the packing resting in the standing box (it rattles)
+//   BM_S1Step/threads/motion/skin/steps/near/friction   one RoundedMeshEngine step; motion = 0: the settled
+//                              packing again and again (the lists kept between steps stay valid), 1: the recorded
+//                              steps of shaking in order, forth and back (the lists are rebuilt as the bodies move),
+//                              2: the recorded steps of the packing resting in the standing box (it rattles);
+//                              friction = 0: S1's frictionless materials, 1: mu = 0.5 and c = 10 N s/m on every
+//                              material with the tangential spring, 2: the same with the paper's viscous law
 //   BM_S1NarrowPhase           Ig2 over every pair's candidates of the settled packing (time per contact)
-//   BM_S1Load                  Law2, node forces and friction over its triangle contacts (time per contact)
+//   BM_S1Load/friction         Law2, node forces and friction over its triangle contacts (time per contact)
 // Counters per step: body pairs, candidates, contacts, candidates per contact, list rebuilds, stage times.
 //   build/bench/roundedmesh_s1_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -22,6 +24,21 @@ const RecordedScene& scene() {
   return loaded;
 }
 
+// S1's model, with friction on every material for friction = 1 (the spring) or 2 (the viscous law).
+ContactModel withFriction(ContactModel model, long friction) {
+  if (friction == 0) return model;
+  model.friction = friction == 1 ? FrictionLaw::Spring : FrictionLaw::Viscous;
+  for (RoundedBody& body : model.bodies) {
+    body.material.friction = 0.5;
+    body.material.tangentialDamping = 10;
+  }
+  for (Partner& partner : model.partners) {
+    partner.material.friction = 0.5;
+    partner.material.tangentialDamping = 10;
+  }
+  return model;
+}
+
 // Frames 0, 1, ..., n-1, n-2, ..., 1, 0, 1, ...: the recorded motion without a jump.
 int frameAt(long step, int frames) {
   const long period = 2 * (frames - 1);
@@ -35,11 +52,12 @@ void BM_S1Step(benchmark::State& state) {
   const RecordedScene::Trajectory* trajectory = motion == 1 ? &scene().shaking : motion == 2 ? &scene().resting : nullptr;
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
-  ContactModel model = scene().model;
+  ContactModel model = withFriction(scene().model, state.range(5));
   if (state.range(2) > 0) model.skins.candidatesMin = model.skins.candidatesMax = 1e-4 * state.range(2);
   if (state.range(3) > 0) model.skins.candidateSteps = static_cast<Real>(state.range(3));
   if (state.range(4) > 0) model.skins.nearFactor = static_cast<Real>(state.range(4));
   ContactData data;
+  data.timeStep = 1e-4;  // S1's
   if (trajectory)
     scene().setStates(data, *trajectory, 0);
   else
@@ -76,14 +94,17 @@ void BM_S1Step(benchmark::State& state) {
   state.counters["pairs_ms"] = benchmark::Counter(1e3 * times.pairs, perStep);
   state.counters["reduction_ms"] = benchmark::Counter(1e3 * times.reduction, perStep);
   state.SetLabel(std::string(motion == 1 ? "shaking" : motion == 2 ? "resting" : "settled") + ", " +
-                 std::to_string(threads) + " thread(s)");
+                 std::to_string(threads) + " thread(s)" +
+                 (state.range(5) == 1 ? ", spring" : state.range(5) == 2 ? ", viscous" : ""));
 }
-BENCHMARK(BM_S1Step)->ArgsProduct({{1, 2}, {0, 1, 2}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({{1, 2}, {0, 1, 2}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+// With friction: the spring and the viscous law.
+BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {0}, {0}, {0}, {1, 2}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // The lists' parameters (0: the model's default): a fixed skin in 1e-4 of the smaller volume-equivalent
 // radius, instead of one that follows each pair's motion; the steps a list is meant to last; the near list's
 // skin as a multiple of the candidates'.
-BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {20, 80}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {1, 2}, {0}, {5, 20, 40}, {3, 5, 10}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {20, 80}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {1, 2}, {0}, {5, 20, 40}, {3, 5, 10}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The settled packing after one step: its pairs with their candidate lists, and every pair's contacts.
 struct SettledStep {
@@ -125,15 +146,18 @@ BENCHMARK(BM_S1NarrowPhase)->Unit(benchmark::kMillisecond);
 
 void BM_S1Load(benchmark::State& state) {
   SettledStep& step = settled();
+  const ContactModel model = withFriction(scene().model, state.range(0));
+  step.data.timeStep = 1e-4;
   for (auto _ : state)
     for (size_t k = 0; k < step.data.pairs.size(); ++k)
-      benchmark::DoNotOptimize(pairLoad(scene().model, step.data, step.data.pairs[k], step.geoms[k]));
+      benchmark::DoNotOptimize(pairLoad(model, step.data, step.data.pairs[k], step.geoms[k], nullptr,
+                                        &step.data.springs[step.data.pairs[k].neighbour]));
   state.counters["ns_per_contact"] =
       benchmark::Counter(static_cast<double>(step.contacts) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
                                                                         benchmark::Counter::kInvert);
   state.counters["contacts"] = static_cast<double>(step.contacts);
 }
-BENCHMARK(BM_S1Load)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_S1Load)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace roundedmesh

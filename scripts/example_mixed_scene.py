@@ -27,9 +27,9 @@ from yade import (O, utils, ForceResetter, InsertionSortCollider, InteractionLoo
                   Ip2_ViscElMat_ViscElMat_ViscElPhys, Law2_ScGeom_ViscElPhys_Basic)
 
 rubber = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-2, friction=0.3,
-                          tangential_damping=50)
+                          tangential_damping=5)
 steel = rm.HertzMaterial(young=2e11, poisson=0.3, density=7800, damping=1e-2, friction=0.3,
-                         tangential_damping=50)
+                         tangential_damping=5)
 # YADE's own material for the contacts YADE computes: sphere-sphere and sphere-wall
 grains = O.materials.append(ViscElMat(tc=0.005, en=0.3, et=1.0, density=2000, frictionAngle=0.3))
 

@@ -10,7 +10,8 @@ Figures (each a function of FIGURES; each writes its CSVs and PNG and prints its
               body_contact_fig3_force.csv   force vs overlap, icosphere frames and first random pose
               body_contact_fig3_nrmse.csv   NRMSE per node count and pose
               body_contact_fig3.png
-    fig6  S4 friction ramp, 162 and 642 nodes, friction force against applied force with the Coulomb law:
+    fig6  S4 friction ramp, 162 and 642 nodes, spring and viscous friction, friction force against applied force with
+          the Coulomb law:
               body_contact_fig6.csv, body_contact_fig6.png
     fig7  pairs of identical prolate spheroids pressed at their equators, R_max/R_min = 1 to 4, 2562 nodes
           (642 for every ratio and 10242 for ratio 2 as convergence checks), 3 poses, against the exact
@@ -255,22 +256,28 @@ def figure_8(output):
 
 
 def figure_6(output):
-    """S4 friction ramp (scenes.friction_ramp), 162 and 642 nodes, against the Coulomb law F_t = min(F_A, mu m g)."""
+    """S4 friction ramp (scenes.friction_ramp), 162 and 642 nodes, under the tangential spring (the default) and the
+    paper's viscous law, against the Coulomb law F_t = min(F_A, mu m g)."""
     from roundedmesh import scenes
     figure, axis = plt.subplots(figsize=(6, 4.5))
-    lines = ["S4 friction ramp: applied force F_A / F_max at which sliding starts (Eq. 21)", "nodes  F_A/F_max"]
+    lines = ["S4 friction ramp: applied force F_A / F_max at which sliding starts; largest |F_t - F_A| / F_max before "
+             "F_A = 0.9 F_max (the ramp's inertia)", "nodes  law      F_A/F_max  before 0.9"]
     with open(os.path.join(output, "body_contact_fig6.csv"), "w", newline="") as f:
         writer = csv.writer(f)
-        writer.writerow(["nodes", "time_s", "applied_over_fmax", "friction_over_fmax", "displacement_m", "sliding"])
-        for subdivisions, nodes in ((2, 162), (3, 642)):
-            r = scenes.friction_ramp(subdivisions, label=f"S4 {nodes} nodes")
-            applied, friction = r["applied"] / r["f_max"], -r["friction"] / r["f_max"]
-            for row in zip(r["time"], applied, friction, r["displacement"], r["sliding"]):
-                writer.writerow([nodes, *row])
-            axis.plot(applied, friction, label=f"{nodes} nodes")
-            lines.append(f"{nodes:5d}  {applied[np.argmax(r['sliding'] > 0)]:.3f}")
+        writer.writerow(["nodes", "law", "time_s", "applied_over_fmax", "friction_over_fmax", "displacement_m",
+                         "sliding"])
+        for law, style in (("spring", "-"), ("viscous", "--")):
+            for subdivisions, nodes in ((2, 162), (3, 642)):
+                r = scenes.friction_ramp(subdivisions, label=f"S4 {nodes} nodes, {law}", law=law)
+                applied, friction = r["applied"] / r["f_max"], -r["friction"] / r["f_max"]
+                for row in zip(r["time"], applied, friction, r["displacement"], r["sliding"]):
+                    writer.writerow([nodes, law, *row])
+                axis.plot(applied, friction, style, label=f"{nodes} nodes, {law}")
+                before = applied < 0.9
+                lines.append(f"{nodes:5d}  {law:7s}  {applied[np.argmax(r['sliding'] > 0)]:9.3f}  "
+                             f"{np.abs(friction[before] - applied[before]).max():10.4f}")
     x = np.linspace(0, 1.5, 100)
-    axis.plot(x, np.minimum(x, 1), "k--", label="Coulomb, analytic sphere")
+    axis.plot(x, np.minimum(x, 1), "k:", label="Coulomb, analytic sphere")
     axis.set_xlabel("applied force F_A / (mu m g)")
     axis.set_ylabel("friction force F_t / (mu m g)")
     axis.legend()

@@ -1,5 +1,7 @@
 #include "pkg/engine/ContactData.hpp"
 
+#include <algorithm>
+
 namespace roundedmesh {
 
 ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& other) {
@@ -23,6 +25,33 @@ void ContactData::resize(const ContactModel& model) {
   partnerClumps.resize(model.partners.size(), -1);
   bodyWrenches.resize(model.bodies.size());
   partnerWrenches.resize(model.partners.size());
+}
+
+namespace {
+
+bool pairBefore(const BodyPair& a, const BodyPair& b) {
+  return a.body < b.body || (a.body == b.body && a.other < b.other);
+}
+
+}  // namespace
+
+std::vector<std::pair<BodyPair, TangentialSpring>> ContactData::activeSprings() const {
+  std::vector<std::pair<BodyPair, TangentialSpring>> active;
+  for (size_t n = 0; n < springs.size() && n < neighbours.size(); ++n)
+    if (springs[n].active()) active.push_back({{neighbours[n].body, neighbours[n].other}, springs[n]});
+  // Springs restored but not yet handed to their pairs are still the scene's.
+  for (const auto& restored : restoredSprings) active.push_back(restored);
+  std::sort(active.begin(), active.end(), [](const auto& a, const auto& b) { return pairBefore(a.first, b.first); });
+  return active;
+}
+
+void ContactData::restoreSprings(std::vector<std::pair<BodyPair, TangentialSpring>> given) {
+  std::sort(given.begin(), given.end(), [](const auto& a, const auto& b) { return pairBefore(a.first, b.first); });
+  restoredSprings = std::move(given);
+  neighbours.clear();
+  neighbourBoxes.clear();
+  candidateLists.clear();
+  springs.clear();
 }
 
 }  // namespace roundedmesh

@@ -2,7 +2,8 @@
 // model's bodies and partners), the wrenches it produces (force [N] and torque [N m] about each body's own
 // position, global frame), the counts and times of its stages, and what it keeps from step to step: the
 // neighbour list of the broad phase and, per neighbouring pair of rounded bodies, its list of candidate
-// triangle pairs (both Verlet lists, rebuilt only when the motion since their build exceeds their skin).
+// triangle pairs (both Verlet lists, rebuilt only when the motion since their build exceeds their skin), and per
+// neighbouring pair its tangential spring (TangentialSpring.hpp), which lasts as long as the pair touches.
 #pragma once
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include "pkg/geom/PressureGeom.hpp"
 #include "pkg/law/CoulombFriction.hpp"
 #include "pkg/law/NodeForces.hpp"
+#include "pkg/law/TangentialSpring.hpp"
 
 namespace roundedmesh {
 
@@ -26,7 +28,7 @@ struct ContactStatistics {
   int quadratureContacts = 0;  // triangle contacts integrated by quadrature
   int directContacts = 0;      // triangle contacts in the direct regime
   int sphereContacts = 0;      // contacts of a sphere body with a sphere body or partner (one per pair)
-  int slidingContacts = 0;     // triangle and sphere contacts sliding (Eq. 21)
+  int slidingContacts = 0;     // triangle and sphere contacts sliding (Eq. 21, or all of a pair's whose spring slides)
   int neighbourRebuilds = 0;   // rebuilds of the broad phase's neighbour list
   int candidateRebuilds = 0;   // triangle-pair candidate lists rebuilt (from their pair's near list)
   int nearRebuilds = 0;        // near lists rebuilt from the triangle trees
@@ -58,7 +60,7 @@ struct TriangleContact {
   Vector3r point;            // c_eff [m]
   Vector3r normal;           // n12
   NormalLoad load;           // Fn [N] on body 2 along n12
-  TangentialLoad friction;   // F_t [N] on body 2, global frame
+  TangentialLoad friction;   // F_t [N] on body 2, global frame (with the spring: the contact's share of the pair's)
   std::array<Real, 3> nodeForces;         // Eq. 15 on body 1's triangle corners, along -n12 [N]
   std::array<Real, 3> partnerNodeForces;  // on body 2's triangle's corners, along n12, when it is a mesh
 };
@@ -74,19 +76,18 @@ struct PairSummary {
                                        // the bodies overlap; the deepest triangle contact can run through both at a
                                        // slant, longer than that (doc/physics.md, "Which triangle pairs touch")
   int triangleContacts = 0;
-  bool sliding = false;                // any triangle contact sliding (Eq. 21)
-  Real elasticEnergy = 0;              // sum of (2/5) F_elastic delta_s over the triangle contacts [J]
+  bool sliding = false;                // the pair's spring slides, or (viscous law) any triangle contact (Eq. 21)
+  Real elasticEnergy = 0;              // sum of (2/5) F_elastic delta_s over the triangle contacts, and the energy
+                                       // of the pair's tangential spring [J]
   Real dampingPower = 0;               // sum of (Fn - F_elastic) ddelta_s/dt: dissipated by normal damping [W]
-  Real frictionPower = 0;              // sum of -F_t . v_t: dissipated by friction [W]
+  Real frictionPower = 0;              // dissipated by friction [W]: sum of -F_t . v_t (viscous law), or the
+                                       // spring's SpringLoad::dissipatedPower
 
-  // Adds one contact's overlap, sliding, elastic energy (2/5 F_elastic delta_s, doc/physics.md "Energy") and
-  // dissipated powers.
-  void add(const PressureGeom& geom, const NormalLoad& load, const TangentialLoad& friction) {
+  // Adds one contact's overlap, elastic energy (2/5 F_elastic delta_s, doc/physics.md "Energy") and normal damping.
+  void add(const PressureGeom& geom, const NormalLoad& load) {
     deepestOverlap = std::max(deepestOverlap, geom.effectiveOverlap);
-    sliding = sliding || friction.sliding;
     elasticEnergy += 0.4 * load.elasticForce * geom.sphereOverlap;
     dampingPower += (load.force - load.elasticForce) * geom.overlapRate;
-    frictionPower -= friction.force.dot(geom.slip);
   }
 };
 
@@ -155,6 +156,10 @@ struct ContactData {
   std::vector<BodyPair> neighbours;
   std::vector<AlignedBox3r> neighbourBoxes;
   std::vector<CandidateList> candidateLists;
+  std::vector<TangentialSpring> springs;  // one per neighbour; reset when the pair does not touch
+  // Springs given by restoreSprings, sorted by pair: handed to their pairs by the next neighbour-list build.
+  std::vector<std::pair<BodyPair, TangentialSpring>> restoredSprings;
+  Real timeStep = 0;  // [s] since the last step: how far the springs move (0: no spring moves)
 
   std::vector<AlignedBox3r> boxes;                // scratch: the world boxes of this step
   std::vector<BodyPair> pairs;                    // pairs whose bounds overlap this step
@@ -182,6 +187,13 @@ struct ContactData {
 
   // Sizes every array for `model`; states are left for the caller to fill.
   void resize(const ContactModel& model);
+
+  // Every active spring, with its pair (engine indices, the pair's own order), sorted by pair.
+  std::vector<std::pair<BodyPair, TangentialSpring>> activeSprings() const;
+  // Replaces every spring by `springs` (as activeSprings gives them): the lists kept between steps are dropped and
+  // the next step builds them again, handing each pair its spring (a pair given the other way round gets its spring
+  // seen from the other side).
+  void restoreSprings(std::vector<std::pair<BodyPair, TangentialSpring>> springs);
 };
 
 }  // namespace roundedmesh

@@ -1,8 +1,8 @@
 // What the contact engine knows that does not change from step to step: the rounded bodies with their
 // meshes and materials, the rigid-shaped partners (planes, YADE Walls, Boxes, Facets and Spheres) with
-// theirs, and the options of the pressure law. A partner may be a sphere body (rm.add_sphere), the engine's
-// second kind of body: an analytic Sphere whose contacts with the other partners the engine computes too. Indices into `bodies` and `partners` are the engine's; `id`
-// is YADE's body id.
+// theirs, the options of the pressure law and the friction law. A partner may be a sphere body (rm.add_sphere), the
+// engine's second kind of body: an analytic Sphere whose contacts with the other partners the engine computes too.
+// Indices into `bodies` and `partners` are the engine's; `id` is YADE's body id.
 #pragma once
 
 #include <memory>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pkg/law/Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp"
+#include "pkg/law/TangentialSpring.hpp"
 #include "pkg/material/HertzMaterial.hpp"
 #include "pkg/shape/Box.hpp"
 #include "pkg/shape/Facet.hpp"
@@ -66,6 +67,7 @@ struct ContactModel {
   std::vector<RoundedBody> bodies;
   std::vector<Partner> partners;
   PressureOptions pressure;
+  FrictionLaw friction = FrictionLaw::Spring;  // the tangential law of every pair (doc/physics.md, "Friction")
   ListSkins skins;
   Real stopOverlap = kStopOverlap;  // infinite: no overlap stops a run (StopRules.hpp)
 };

@@ -1,10 +1,13 @@
 // Largest stable time step of YADE's leap-frog (forces from positions at t and velocities at t - dt/2)
-// for the damped Hertz contact of Eq. 7 linearised at overlap delta:
-//   k = dF/d(delta) = 2 E* sqrt(R* delta),   c = dF/d(ddelta/dt) = (2/3) A k,
-//   omega = sqrt(k/m),   zeta = c / (2 m omega) = A omega / 3,
-//   dt_crit = (2 / omega) (sqrt(1 + zeta^2) - zeta)
-// (the linear scheme's amplification matrix has spectral radius 1 there).
-// Inputs: mass m [kg] (the reduced mass of the pair), E* [Pa], R* [m], A [s], delta [m]. Output [s].
+// for a linear oscillator x'' = -(k x + c v) / m:
+//   omega = sqrt(k/m),   zeta = c / (2 m omega),   dt_crit = (2 / omega) (sqrt(1 + zeta^2) - zeta)
+// (the scheme's amplification matrix has spectral radius 1 there), 2 m / c for k = 0.
+// The normal contact is the damped Hertz contact of Eq. 7 linearised at overlap delta:
+//   k = dF/d(delta) = 2 E* sqrt(R* delta),   c = dF/d(ddelta/dt) = (2/3) A k,   so zeta = A omega / 3.
+// The tangential contact is the spring of TangentialSpring.hpp, k_t = (k_t/k_n) k, with the damping c of the
+// materials (FrictionLaw::Spring), or the viscous no-slip force alone, k_t = 0 (FrictionLaw::Viscous); its mass is
+// what a force at the contact point moves: 1/m_t = 1/m + max over contact points x and directions t of
+// t^T [x]^T I^-1 [x] t (m/3.5 for a sphere), a bound for any contact point and direction.
 //
 // impactTimeStep: the step that resolves an impact at `speed` [m/s]: one that carries the bodies through at most
 // kImpactFraction of the depth the impact reaches, the Hertz depth `overlap` [m] at most (deeper impacts are not
@@ -24,10 +27,11 @@
 
 namespace roundedmesh {
 
-inline Real criticalTimeStep(Real mass, Real effectiveModulus, Real radius, Real damping, Real overlap) {
-  const Real stiffness = 2 * effectiveModulus * std::sqrt(radius * overlap);
+// Inputs: mass [kg], stiffness [N/m], damping [N s/m]. Output [s]; infinite for k = c = 0.
+inline Real leapFrogLimit(Real mass, Real stiffness, Real damping) {
+  if (!(stiffness > 0)) return damping > 0 ? 2 * mass / damping : std::numeric_limits<Real>::infinity();
   const Real omega = std::sqrt(stiffness / mass);
-  const Real zeta = damping * omega / 3;
+  const Real zeta = damping / (2 * mass * omega);
   return 2 / omega * (std::sqrt(1 + zeta * zeta) - zeta);
 }
 
@@ -40,21 +44,34 @@ inline Real impactTimeStep(Real mass, Real effectiveModulus, Real radius, Real o
   return kImpactFraction * std::min(depth, overlap) / speed;
 }
 
-// The scene's limit: criticalTimeStep over every pair a rounded body or a sphere body can form (with another
-// body or a partner), each rounded body taken as a sphere of its volume-equivalent radius r, a partner as a
-// plane or its sphere: R* = r1 r2 / (r1 + r2), reduced mass, at an overlap of min(r1, r2) / 10, the deepest a Hertz
-// contact is meant to go. An estimate for compact bodies: triangles much flatter than r, or an elongated
-// body's lower effective mass when a contact also turns it, lower the true limit.
+// The normal contact. Inputs: mass m [kg] (the reduced mass of the pair), E* [Pa], R* [m], A [s], delta [m].
+// Output [s].
+inline Real criticalTimeStep(Real mass, Real effectiveModulus, Real radius, Real damping, Real overlap) {
+  const Real stiffness = 2 * effectiveModulus * std::sqrt(radius * overlap);
+  return leapFrogLimit(mass, stiffness, 2.0 / 3.0 * damping * stiffness);
+}
+
+// The scene's limit: the normal and, with friction (mu > 0), the tangential limit over every pair a rounded body or
+// a sphere body can form (with another body or a partner), each rounded body taken as a sphere of its
+// volume-equivalent radius r, a partner as a plane or its sphere: R* = r1 r2 / (r1 + r2), reduced masses, at an
+// overlap of min(r1, r2) / 10, the deepest a Hertz contact is meant to go. An estimate for compact bodies: triangles
+// much flatter than r, an elongated body's lower effective mass when a normal contact also turns it, or several
+// contacts on one body, lower the true limit.
 // bodyMasses[b]: the rounded bodies' masses [kg]; partnerMasses[p]: the mass of a partner that moves
-// under forces, 0 for a driven or fixed one (also for a sphere body). With impactSpeed [m/s] > 0, the limit is also
-// the impactTimeStep of every such pair at that speed.
+// under forces, 0 for a driven or fixed one (also for a sphere body). bodyInertias, partnerInertias: their
+// principal moments of inertia [kg m^2] (a rounded body's in its mesh's frame), for the tangential mass; empty (or
+// zero for one side) leaves rotation out. A partner's contact points are taken at its farthest point (a Sphere's
+// radius, a Box's corner, a Facet's farthest corner; Walls and Planes have none).
+// With impactSpeed [m/s] > 0, the limit is also the impactTimeStep of every such pair at that speed.
 struct StabilityLimit {
   Real timeStep = std::numeric_limits<Real>::infinity();  // [s]
   int body = -1;   // index of the limiting body: a rounded body (< bodies.size()) or, past them, a sphere body
   int other = -1;  // the other side: a rounded body or, past them, a partner
+  bool tangential = false;  // the limit is the tangential contact's (friction), not the normal one's
 };
 
 StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>& bodyMasses,
-                              const std::vector<Real>& partnerMasses, Real impactSpeed = 0);
+                              const std::vector<Real>& partnerMasses, const std::vector<Vector3r>& bodyInertias = {},
+                              const std::vector<Vector3r>& partnerInertias = {}, Real impactSpeed = 0);
 
 }  // namespace roundedmesh

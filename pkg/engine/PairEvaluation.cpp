@@ -5,8 +5,10 @@ namespace {
 
 // Body 0 of `model` against its other entity (body 1, or partner 0), in the states given.
 PairEvaluation evaluate(ContactModel& model, const std::vector<BodyState>& bodies,
-                        const std::vector<BodyState>& partners, const PressureOptions& options, bool details) {
+                        const std::vector<BodyState>& partners, const PressureOptions& options, bool details,
+                        FrictionLaw friction) {
   model.pressure = options;
+  model.friction = friction;
   for (const RoundedBody& body : model.bodies) body.material.validate();
   for (const Partner& partner : model.partners) partner.material.validate();
   ContactData data;
@@ -24,27 +26,29 @@ PairEvaluation evaluate(ContactModel& model, const std::vector<BodyState>& bodie
 }  // namespace
 
 PairEvaluation planeContact(const RoundedBody& body, const BodyState& state, const Plane& plane,
-                            const HertzMaterial& planeMaterial, const PressureOptions& options, bool details) {
+                            const HertzMaterial& planeMaterial, const PressureOptions& options, bool details,
+                            FrictionLaw friction) {
   ContactModel model;
   model.bodies.push_back(body);
   model.partners.push_back({-1, plane, planeMaterial});
-  return evaluate(model, {state}, {BodyState()}, options, details);
+  return evaluate(model, {state}, {BodyState()}, options, details, friction);
 }
 
 PairEvaluation sphereContact(const RoundedBody& body, const BodyState& state, const Sphere& sphere,
                              const BodyState& sphereState, const HertzMaterial& sphereMaterial,
-                             const PressureOptions& options, bool details) {
+                             const PressureOptions& options, bool details, FrictionLaw friction) {
   ContactModel model;
   model.bodies.push_back(body);
   model.partners.push_back({-1, sphere, sphereMaterial});
-  return evaluate(model, {state}, {sphereState}, options, details);
+  return evaluate(model, {state}, {sphereState}, options, details, friction);
 }
 
 PairEvaluation bodyContact(const RoundedBody& first, const BodyState& firstState, const RoundedBody& second,
-                           const BodyState& secondState, const PressureOptions& options, bool details) {
+                           const BodyState& secondState, const PressureOptions& options, bool details,
+                           FrictionLaw friction) {
   ContactModel model;
   model.bodies = {first, second};
-  return evaluate(model, {firstState, secondState}, {}, options, details);
+  return evaluate(model, {firstState, secondState}, {}, options, details, friction);
 }
 
 }  // namespace roundedmesh

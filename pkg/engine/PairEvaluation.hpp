@@ -2,7 +2,8 @@
 // against a plane, against an analytic sphere, or against another rounded body. What rm.plane_contact,
 // rm.sphere_contact, rm.body_contact and rm.triangle_contacts return, for validation and for looking inside a
 // contact. Forces [N] and torques [N m] global, each torque about its own body's position; with `details`, every
-// triangle contact as resolvePair sees it. Throws std::invalid_argument naming a material parameter out of range.
+// triangle contact as resolvePair sees it. `friction`: the tangential law; the spring of FrictionLaw::Spring starts
+// here, so only its damping acts (a contact with no history). Throws std::invalid_argument naming a material parameter out of range.
 #pragma once
 
 #include <vector>
@@ -17,13 +18,16 @@ struct PairEvaluation {
 };
 
 PairEvaluation planeContact(const RoundedBody& body, const BodyState& state, const Plane& plane,
-                            const HertzMaterial& planeMaterial, const PressureOptions& options, bool details = false);
+                            const HertzMaterial& planeMaterial, const PressureOptions& options, bool details = false,
+                            FrictionLaw friction = FrictionLaw::Spring);
 
 PairEvaluation sphereContact(const RoundedBody& body, const BodyState& state, const Sphere& sphere,
                              const BodyState& sphereState, const HertzMaterial& sphereMaterial,
-                             const PressureOptions& options, bool details = false);
+                             const PressureOptions& options, bool details = false,
+                            FrictionLaw friction = FrictionLaw::Spring);
 
 PairEvaluation bodyContact(const RoundedBody& first, const BodyState& firstState, const RoundedBody& second,
-                           const BodyState& secondState, const PressureOptions& options, bool details = false);
+                           const BodyState& secondState, const PressureOptions& options, bool details = false,
+                            FrictionLaw friction = FrictionLaw::Spring);
 
 }  // namespace roundedmesh

@@ -240,15 +240,39 @@ void rebuildNeighbours(const ContactModel& model, ContactData& data, const std::
   auto before = [](const BodyPair& a, const BodyPair& b) { return a.body < b.body || (a.body == b.body && a.other < b.other); };
   std::sort(neighbours.begin(), neighbours.end(), before);
   std::vector<CandidateList> lists(neighbours.size());
+  std::vector<TangentialSpring> springs(neighbours.size());
   size_t old = 0;
   for (size_t n = 0; n < neighbours.size(); ++n) {
     neighbours[n].neighbour = static_cast<int>(n);
     while (old < data.neighbours.size() && before(data.neighbours[old], neighbours[n])) ++old;
-    if (old < data.neighbours.size() && !before(neighbours[n], data.neighbours[old]))
+    if (old < data.neighbours.size() && !before(neighbours[n], data.neighbours[old])) {
       lists[n] = std::move(data.candidateLists[old]);
+      springs[n] = data.springs[old];
+    }
+  }
+  // Springs restored from a saved scene (ContactData::restoreSprings) go to their pairs, seen from the pair's side.
+  if (!data.restoredSprings.empty()) {
+    auto find = [&](int body, int other) {
+      const auto it = std::lower_bound(data.restoredSprings.begin(), data.restoredSprings.end(), BodyPair{body, other},
+                                       [&](const auto& entry, const BodyPair& key) { return before(entry.first, key); });
+      return it != data.restoredSprings.end() && it->first.body == body && it->first.other == other ? &it->second
+                                                                                                    : nullptr;
+    };
+    for (size_t n = 0; n < neighbours.size(); ++n) {
+      if (const TangentialSpring* same = find(neighbours[n].body, neighbours[n].other)) {
+        springs[n] = *same;
+      } else if (const TangentialSpring* reversed = find(neighbours[n].other, neighbours[n].body)) {
+        springs[n] = *reversed;
+        springs[n].displacement = -reversed->displacement;
+        springs[n].twist = -reversed->twist;
+        springs[n].normal = -reversed->normal;
+      }
+    }
+    data.restoredSprings.clear();
   }
   data.neighbours = std::move(neighbours);
   data.candidateLists = std::move(lists);
+  data.springs = std::move(springs);
 }
 
 }  // namespace
@@ -277,11 +301,16 @@ void broadPhase(const ContactModel& model, ContactData& data) {
   for (const BodyPair& pair : data.neighbours) {
     const int clump = data.clump(pair.body);
     const int otherClump = data.clump(pair.other);
-    if ((clump >= 0 && clump == otherClump) || !boxes[pair.body].intersects(boxes[pair.other])) continue;
-    if (pair.other < bodyCount &&
-        (data.bodyStates[pair.body].position - data.bodyStates[pair.other].position).norm() >=
-            model.bodies[pair.body].mesh->sphereBoundRadius() + model.bodies[pair.other].mesh->sphereBoundRadius())
+    const bool apart =
+        (clump >= 0 && clump == otherClump) || !boxes[pair.body].intersects(boxes[pair.other]) ||
+        (pair.other < bodyCount &&
+         (data.bodyStates[pair.body].position - data.bodyStates[pair.other].position).norm() >=
+             model.bodies[pair.body].mesh->sphereBoundRadius() + model.bodies[pair.other].mesh->sphereBoundRadius());
+    if (apart) {
+      // Not touching: the pair's spring is forgotten (it had let go in the step the pair stopped touching).
+      data.springs[pair.neighbour] = TangentialSpring();
       continue;
+    }
     data.pairs.push_back(pair);
   }
 }
@@ -307,8 +336,93 @@ void pairGeometry(const ContactModel& model, const ContactData& data, const Body
   if (!geoms.empty()) ++statistics.touchingPairs;
 }
 
+namespace {
+
+// One triangle contact's normal load and where it acts (body 1's frame), kept while the pair's friction is found.
+struct ContactShare {
+  NormalLoad load;
+  Vector3r point;  // where Fn acts: c + (-Mn_y, Mn_x) / Fn, or c_eff if Fn = 0
+};
+
+// The viscous friction of the paper (FrictionLaw::Viscous, CoulombFriction.hpp) on each triangle contact at c_eff,
+// the circle fractions shared out so that they sum to 1 over the pair: adds it to `local` (body 1's frame) and to
+// the summary, and each triangle's to `listed` (global frame).
+void viscousFriction(const std::vector<PressureGeom>& geoms, const std::vector<ContactShare>& shares,
+                     const HertzPhys& phys, const Matrix3r& toGlobal, Wrench& local, PairResult& result,
+                     TriangleContact* listed) {
+  thread_local std::vector<Real> fraction;
+  fraction.resize(geoms.size());
+  Real fractions = 0;
+  for (size_t k = 0; k < geoms.size(); ++k) fractions += fraction[k] = circleFraction(geoms[k]);
+  for (size_t k = 0; k < geoms.size(); ++k) {
+    const PressureGeom& geom = geoms[k];
+    const TangentialLoad friction =
+        coulombFriction(geom, shares[k].load, phys, fractions > 0 ? fraction[k] / fractions : 0);
+    const Vector3r point = planePoint(geom, geom.effectivePoint);
+    local.force -= friction.force;
+    local.torque -= point.cross(friction.force);
+    result.summary.frictionPower -= friction.force.dot(geom.slip);
+    if (friction.sliding) {
+      ++result.statistics.slidingContacts;
+      result.summary.sliding = true;
+    }
+    if (listed) listed[k].friction = {toGlobal * friction.force, friction.sliding};
+  }
+}
+
+// The pair's tangential spring (FrictionLaw::Spring, TangentialSpring.hpp) at the centre of pressure `centre` with
+// normal `normal` (body 1's frame): brings `spring` to this step, adds its load to `local` and the summary, and
+// each triangle contact's share to `listed` (global frame).
+void springFriction(const std::vector<ContactShare>& shares, Real normalForce, Real normalStiffness,
+                    const Vector3r& centre, const Vector3r& normal, const RelativeMotion& motion, const BodyState& s1,
+                    const BodyState& s2, const HertzPhys& phys, Real dt, const Matrix3r& toGlobal,
+                    TangentialSpring& spring, Wrench& local, PairResult& result, TriangleContact* listed) {
+  SpringContact contact;
+  Real polar = 0, radius = 0;
+  if (normalForce > 0) {
+    for (const ContactShare& share : shares) {
+      Vector3r r = share.point - centre;
+      r -= r.dot(normal) * normal;
+      polar += share.load.force * r.squaredNorm();
+      radius += share.load.force * r.norm();
+    }
+    polar /= normalForce;
+    radius /= normalForce;
+  }
+  const Vector3r v = motion.at(centre);
+  contact.normal = toGlobal * normal;
+  contact.slip = toGlobal * (v - v.dot(normal) * normal);
+  contact.spin = motion.angular.dot(normal);
+  contact.frameSpin = 0.5 * (s1.angularVelocity + s2.angularVelocity).dot(contact.normal);
+  contact.normalForce = normalForce;
+  contact.stiffness = phys.stiffnessRatio * normalStiffness;
+  contact.polarMoment = polar;
+  contact.meanRadius = radius;
+  const SpringLoad load = tangentialSpring(contact, phys, dt, spring);
+  const Vector3r force = toGlobal.transpose() * load.force;
+  local.force -= force;
+  local.torque -= centre.cross(force) + load.torque * normal;
+  result.summary.frictionPower += load.dissipatedPower;
+  result.summary.elasticEnergy += spring.energy;
+  result.summary.sliding = load.sliding;
+  if (load.sliding) result.statistics.slidingContacts += static_cast<int>(shares.size());
+  if (listed) {
+    for (size_t k = 0; k < shares.size(); ++k) {
+      const Real w = normalForce > 0 ? shares[k].load.force / normalForce : 0;
+      Vector3r r = shares[k].point - centre;
+      r -= r.dot(normal) * normal;
+      const Vector3r twist =
+          polar > 0 ? Vector3r(load.torque / polar * contact.normal.cross(toGlobal * r)) : Vector3r::Zero();
+      listed[k].friction = {w * (load.force + twist), load.sliding};
+    }
+  }
+}
+
+}  // namespace
+
 PairResult pairLoad(const ContactModel& model, const ContactData& data, const BodyPair& pair,
-                    const std::vector<PressureGeom>& geoms, std::vector<TriangleContact>* contacts) {
+                    const std::vector<PressureGeom>& geoms, std::vector<TriangleContact>* contacts,
+                    TangentialSpring* spring) {
   const int bodyCount = static_cast<int>(model.bodies.size());
   const bool otherIsBody = pair.other < bodyCount;
   const RoundedBody& body = model.bodies[pair.body];
@@ -321,11 +435,23 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   const RoundedMesh& mesh = *body.mesh;
   PairResult result;
   PairSummary& summary = result.summary;
+  if (geoms.empty()) {
+    // Not touching: the spring lets go, and what it held is dissipated.
+    if (spring) {
+      if (data.timeStep > 0) summary.frictionPower = spring->energy / data.timeStep;
+      *spring = TangentialSpring();
+    }
+    result.onOther = reaction(result.onBody, s1.position, s2.position);
+    return result;
+  }
   Wrench local;
   // Sums of Fn times the point of application and along the normal, and of the unweighted ones for a pair
-  // whose normal forces are all zero (body 1's frame).
+  // whose normal forces are all zero (body 1's frame); the pair's normal stiffness.
   Vector3r moment = Vector3r::Zero(), normals = Vector3r::Zero(), points = Vector3r::Zero();
-  Real normalForce = 0;
+  Real normalForce = 0, stiffness = 0;
+  thread_local std::vector<ContactShare> shares;
+  shares.clear();
+  const size_t listedFrom = contacts ? contacts->size() : 0;
   for (const PressureGeom& geom : geoms) {
     const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, model.pressure);
     ++(load.regime == Regime::Direct ? result.statistics.directContacts : result.statistics.quadratureContacts);
@@ -334,38 +460,55 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
                                        mesh.vertices()[corners[2]]};
     const std::array<Real, 3> forces = nodeForces(geom.nodes, load);
     addNodeForcesToBody(x, forces, geom.normal, local);
-    const TangentialLoad friction = coulombFriction(geom, load, phys);
     const Vector3r point = planePoint(geom, geom.effectivePoint);
-    if (friction.sliding) ++result.statistics.slidingContacts;
-    local.force -= friction.force;
-    local.torque -= point.cross(friction.force);
     // Fn acts at c + (-Mn_y, Mn_x) / Fn (NodeForces.hpp), so Fn times that point needs no division.
-    moment += load.force * geom.centre - load.moment.y() * geom.tangent1 + load.moment.x() * geom.tangent2;
+    const Vector3r weighted =
+        load.force * geom.centre - load.moment.y() * geom.tangent1 + load.moment.x() * geom.tangent2;
+    moment += weighted;
     normalForce += load.force;
     normals += load.force * geom.normal;
     points += point;
-    summary.add(geom, load, friction);
+    // dF/d(delta) = (3/2) F / delta of a Hertz contact, for its elastic part.
+    if (geom.sphereOverlap > 0) stiffness += 1.5 * load.elasticForce / geom.sphereOverlap;
+    shares.push_back({load, load.force > 0 ? Vector3r(weighted / load.force) : point});
+    summary.add(geom, load);
     if (contacts) {
       TriangleContact& c = contacts->emplace_back();
       c.geom = geom;
       c.point = s1.position + toGlobal * point;
       c.normal = toGlobal * geom.normal;
       c.load = load;
-      c.friction = {toGlobal * friction.force, friction.sliding};
+      c.friction = TangentialLoad();
       c.nodeForces = forces;
       if (geom.partnerTriangle >= 0) c.partnerNodeForces = nodeForces(geom.partnerNodes, load);
     }
   }
   summary.triangleContacts = static_cast<int>(geoms.size());
-  if (!geoms.empty()) {
-    const bool loaded = normalForce > 0;
-    summary.point = s1.position + toGlobal * (loaded ? Vector3r(moment / normalForce) : Vector3r(points / geoms.size()));
-    if (!loaded)
-      for (const PressureGeom& geom : geoms) normals += geom.normal;
-    const Vector3r normal = normals.normalized();
-    summary.normal = toGlobal * normal;
-    for (const PressureGeom& geom : geoms)
-      summary.depth = std::max(summary.depth, geom.effectiveOverlap * geom.normal.dot(normal));
+  const bool loaded = normalForce > 0;
+  const Vector3r centre = loaded ? Vector3r(moment / normalForce) : Vector3r(points / geoms.size());
+  if (!loaded)
+    for (const PressureGeom& geom : geoms) normals += geom.normal;
+  const Vector3r normal = normals.normalized();
+  summary.point = s1.position + toGlobal * centre;
+  summary.normal = toGlobal * normal;
+  for (const PressureGeom& geom : geoms)
+    summary.depth = std::max(summary.depth, geom.effectiveOverlap * geom.normal.dot(normal));
+  TriangleContact* listed = contacts ? contacts->data() + listedFrom : nullptr;
+  if (!(phys.friction > 0) || model.friction == FrictionLaw::Viscous) {
+    // No spring: frictionless now (a material changed), or the viscous law.
+    if (spring && spring->active()) {
+      if (data.timeStep > 0) summary.frictionPower += spring->energy / data.timeStep;
+      *spring = TangentialSpring();
+    }
+  }
+  if (phys.friction > 0) {
+    if (model.friction == FrictionLaw::Viscous) {
+      viscousFriction(geoms, shares, phys, toGlobal, local, result, listed);
+    } else {
+      TangentialSpring fresh;
+      springFriction(shares, normalForce, stiffness, centre, normal, relativeMotion(s1, s2, toGlobal.transpose()), s1,
+                     s2, phys, spring ? data.timeStep : 0, toGlobal, spring ? *spring : fresh, local, result, listed);
+    }
   }
   result.onBody.force = toGlobal * local.force;
   result.onBody.torque = toGlobal * local.torque;
@@ -376,11 +519,11 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
 
 PairResult resolvePair(const ContactModel& model, const ContactData& data, const BodyPair& pair,
                        std::vector<PressureGeom>& scratch, std::vector<TriangleContact>* contacts,
-                       CandidateList* candidates) {
-  if (pair.body >= static_cast<int>(model.bodies.size())) return resolveSpherePair(model, data, pair);
+                       CandidateList* candidates, TangentialSpring* spring) {
+  if (pair.body >= static_cast<int>(model.bodies.size())) return resolveSpherePair(model, data, pair, spring);
   ContactStatistics statistics;
   pairGeometry(model, data, pair, scratch, statistics, candidates);
-  PairResult result = pairLoad(model, data, pair, scratch, contacts);
+  PairResult result = pairLoad(model, data, pair, scratch, contacts, spring);
   result.statistics += statistics;
   return result;
 }
@@ -403,7 +546,7 @@ void RoundedMeshEngine(const ContactModel& model, ContactData& data) {
       contacts->clear();
     }
     data.pairResults[k] = resolvePair(model, data, pair, data.geoms[omp_get_thread_num()], contacts,
-                                      &data.candidateLists[pair.neighbour]);
+                                      &data.candidateLists[pair.neighbour], &data.springs[pair.neighbour]);
   }
   const double resolved = omp_get_wtime();
 

@@ -7,7 +7,8 @@
 
 namespace roundedmesh {
 
-PairResult resolveSpherePair(const ContactModel& model, const ContactData& data, const BodyPair& pair) {
+PairResult resolveSpherePair(const ContactModel& model, const ContactData& data, const BodyPair& pair,
+                             TangentialSpring* spring) {
   const int bodyCount = static_cast<int>(model.bodies.size());
   const Partner& sphere = model.partners[pair.body - bodyCount];
   const Partner& other = model.partners[pair.other - bodyCount];
@@ -37,16 +38,48 @@ PairResult resolveSpherePair(const ContactModel& model, const ContactData& data,
       other.shape);
   PairResult result;
   result.statistics.bodyPairs = 1;
-  if (!found) return result;
+  if (!found) {
+    // Not touching: the spring lets go, and what it held is dissipated.
+    if (spring) {
+      if (data.timeStep > 0) result.summary.frictionPower = spring->energy / data.timeStep;
+      *spring = TangentialSpring();
+    }
+    return result;
+  }
   result.statistics.touchingPairs = 1;
   result.statistics.sphereContacts = 1;
   const HertzPhys phys = Ip2_HertzMaterial_HertzMaterial_HertzPhys(sphere.material, other.material);
   PressureOptions whole = model.pressure;
   whole.regime = RegimeChoice::Direct;
   const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, whole);
-  const TangentialLoad friction = coulombFriction(geom, load, phys);
+  result.summary.add(geom, load);
+  TangentialLoad friction;
+  if ((!(phys.friction > 0) || model.friction == FrictionLaw::Viscous) && spring && spring->active()) {
+    // No spring: frictionless now (a material changed), or the viscous law.
+    if (data.timeStep > 0) result.summary.frictionPower += spring->energy / data.timeStep;
+    *spring = TangentialSpring();
+  }
+  if (model.friction == FrictionLaw::Viscous) {
+    friction = coulombFriction(geom, load, phys);
+    result.summary.frictionPower += -friction.force.dot(geom.slip);
+  } else if (phys.friction > 0) {
+    // One contact point: the spring at c, without twist.
+    SpringContact contact;
+    contact.normal = geom.normal;
+    contact.slip = geom.slip;
+    contact.spin = motion.angular.dot(geom.normal);
+    contact.frameSpin = 0.5 * (s1.angularVelocity + s2.angularVelocity).dot(geom.normal);
+    contact.normalForce = load.force;
+    contact.stiffness = phys.stiffnessRatio * 1.5 * load.elasticForce / geom.sphereOverlap;
+    TangentialSpring fresh;
+    TangentialSpring& held = spring ? *spring : fresh;
+    const SpringLoad spun = tangentialSpring(contact, phys, spring ? data.timeStep : 0, held);
+    friction = {spun.force, spun.sliding};
+    result.summary.frictionPower += spun.dissipatedPower;
+    result.summary.elasticEnergy += held.energy;
+  }
   result.statistics.slidingContacts = friction.sliding;
-  result.summary.add(geom, load, friction);
+  result.summary.sliding = friction.sliding;
   result.summary.triangleContacts = 1;  // the one contact over the whole circle
   result.summary.depth = result.summary.deepestOverlap;
   result.summary.point = s1.position + planePoint(geom, geom.effectivePoint);

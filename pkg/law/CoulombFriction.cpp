@@ -5,17 +5,21 @@
 
 namespace roundedmesh {
 
-TangentialLoad coulombFriction(const PressureGeom& geom, const NormalLoad& load, const HertzPhys& phys) {
+Real circleFraction(const PressureGeom& geom) {
+  const Real a = geom.contactRadius;
+  return circlePolygonArea(a, geom.polygon) / (M_PI * a * a);
+}
+
+TangentialLoad coulombFriction(const PressureGeom& geom, const NormalLoad& load, const HertzPhys& phys, Real share) {
   TangentialLoad out;
   const Real speed = geom.slip.norm();
-  if (!phys.hasFriction() || !(speed > 0)) return out;
+  if (!(phys.friction > 0) || !(speed > 0)) return out;
   const Real threshold = phys.friction * hertzPressure(geom, phys).totalForce();
   out.sliding = phys.tangentialDamping * speed > threshold;
   if (out.sliding) {
     out.force = -phys.friction * load.force / speed * geom.slip;
   } else {
-    const Real a = geom.contactRadius;
-    out.force = -phys.tangentialDamping * (circlePolygonArea(a, geom.polygon) / (M_PI * a * a)) * geom.slip;
+    out.force = -phys.tangentialDamping * (share < 0 ? circleFraction(geom) : share) * geom.slip;
   }
   return out;
 }

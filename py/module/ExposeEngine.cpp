@@ -2,8 +2,10 @@
 // sphere_contact and body_contact (pkg/engine/PairEvaluation.hpp): arguments checked and converted here.
 #include <boost/python.hpp>
 #include <chrono>
-#include <map>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
 #include <stdexcept>
 
 #include "pkg/engine/CriticalTimeStep.hpp"
@@ -33,11 +35,28 @@ PressureOptions pressureOptions(Real gamma, const std::string& regime) {
   return options;
 }
 
+FrictionLaw frictionLaw(const std::string& friction) {
+  if (friction == "spring") return FrictionLaw::Spring;
+  if (friction == "viscous") return FrictionLaw::Viscous;
+  throw std::invalid_argument("friction must be 'spring' or 'viscous', got '" + friction + "'");
+}
+
 std::vector<Real> toReals(const bp::object& sequence, size_t expected) {
   if (static_cast<size_t>(bp::len(sequence)) != expected)
     throw std::invalid_argument("expected " + std::to_string(expected) + " masses");
   std::vector<Real> values(expected);
   for (size_t i = 0; i < expected; ++i) values[i] = bp::extract<Real>(sequence[i]);
+  return values;
+}
+
+constexpr const char* kSpringHeader = "RMSPRING1";
+constexpr size_t kSpringRecord = 2 * sizeof(std::int32_t) + 8 * sizeof(Real);
+
+std::vector<Vector3r> toVectors(const bp::object& sequence, size_t expected) {
+  if (static_cast<size_t>(bp::len(sequence)) != expected)
+    throw std::invalid_argument("expected " + std::to_string(expected) + " moments of inertia");
+  std::vector<Vector3r> values(expected);
+  for (size_t i = 0; i < expected; ++i) values[i] = bp::extract<Vector3r>(sequence[i]);
   return values;
 }
 
@@ -55,10 +74,11 @@ class Engine {
     const int id = bp::extract<int>(body.attr("id"));
     model_.partners.push_back({id, sphereShape(body, id), material, true});
   }
-  void setOptions(Real gamma, const std::string& regime, Real stopOverlap) {
+  void setOptions(Real gamma, const std::string& regime, const std::string& friction, Real stopOverlap) {
     if (!(stopOverlap > 0))
       throw std::invalid_argument("stop_overlap must be positive (math.inf: never), got " + std::to_string(stopOverlap));
     model_.pressure = pressureOptions(gamma, regime);
+    model_.friction = frictionLaw(friction);
     model_.stopOverlap = stopOverlap;
   }
 
@@ -84,14 +104,67 @@ class Engine {
     return missing;
   }
 
-  // (time step [s], YADE id of the body, YADE id of the other body) of the most restrictive pair, for the
-  // masses the bodies have in YADE now (a partner's mass 0 if it does not move under forces).
+  // (time step [s], YADE id of the body, YADE id of the other body, whether the limit is the tangential
+  // contact's) of the most restrictive pair, for the masses and principal moments of inertia the bodies have in
+  // YADE now (a partner's mass 0 if it does not move under forces).
   // With impactSpeed [m/s] > 0, also the step that resolves an impact at that speed (impactTimeStep).
-  bp::tuple stabilityLimit(const bp::object& bodyMasses, const bp::object& partnerMasses, Real impactSpeed) const {
-    const StabilityLimit limit = roundedmesh::stabilityLimit(model_, toReals(bodyMasses, model_.bodies.size()),
-                                                             toReals(partnerMasses, model_.partners.size()), impactSpeed);
-    if (limit.body < 0) return bp::make_tuple(limit.timeStep, -1, -1);
-    return bp::make_tuple(limit.timeStep, yadeId(limit.body), yadeId(limit.other));
+  bp::tuple stabilityLimit(const bp::object& bodyMasses, const bp::object& partnerMasses,
+                           const bp::object& bodyInertias, const bp::object& partnerInertias, Real impactSpeed) const {
+    const StabilityLimit limit = roundedmesh::stabilityLimit(
+        model_, toReals(bodyMasses, model_.bodies.size()), toReals(partnerMasses, model_.partners.size()),
+        toVectors(bodyInertias, model_.bodies.size()), toVectors(partnerInertias, model_.partners.size()),
+        impactSpeed);
+    if (limit.body < 0) return bp::make_tuple(limit.timeStep, -1, -1, false);
+    return bp::make_tuple(limit.timeStep, yadeId(limit.body), yadeId(limit.other), limit.tangential);
+  }
+
+  // The tangential springs of the last step (TangentialSpring.hpp), as bytes: "RMSPRING1" then, per spring, the
+  // YADE ids of the pair (two int32, the pair's own order) and eight doubles: displacement (3), twist, normal (3),
+  // energy, in the machine's byte order. None if there is none.
+  bp::object springs() const {
+    const auto active = data_.activeSprings();
+    if (active.empty()) return bp::object();
+    std::string bytes(kSpringHeader);
+    bytes.reserve(bytes.size() + active.size() * kSpringRecord);
+    for (const auto& [pair, spring] : active) {
+      const std::int32_t ids[2] = {yadeId(pair.body), yadeId(pair.other)};
+      const Real values[8] = {spring.displacement.x(), spring.displacement.y(), spring.displacement.z(), spring.twist,
+                              spring.normal.x(),       spring.normal.y(),       spring.normal.z(),       spring.energy};
+      bytes.append(reinterpret_cast<const char*>(ids), sizeof ids);
+      bytes.append(reinterpret_cast<const char*>(values), sizeof values);
+    }
+    return bp::object(bp::handle<>(PyBytes_FromStringAndSize(bytes.data(), static_cast<Py_ssize_t>(bytes.size()))));
+  }
+
+  // Replaces the springs by those of `record` (bytes from springs(), or None for none): the next step hands each
+  // pair its own. Pairs whose bodies the engine does not know (erased since) are dropped.
+  void restoreSprings(const bp::object& record) {
+    std::vector<std::pair<BodyPair, TangentialSpring>> springs;
+    if (!record.is_none()) {
+      const std::string bytes = bp::extract<std::string>(record);
+      const size_t header = std::string(kSpringHeader).size();
+      if (bytes.compare(0, header, kSpringHeader) != 0 || (bytes.size() - header) % kSpringRecord != 0)
+        throw std::invalid_argument("the scene's tangential springs (O.tags['roundedmesh.springs']) are damaged");
+      std::map<int, int> index;
+      for (size_t b = 0; b < model_.bodies.size(); ++b) index[model_.bodies[b].id] = static_cast<int>(b);
+      for (size_t p = 0; p < model_.partners.size(); ++p)
+        index[model_.partners[p].id] = static_cast<int>(model_.bodies.size() + p);
+      for (size_t at = header; at < bytes.size(); at += kSpringRecord) {
+        std::int32_t ids[2];
+        Real values[8];
+        std::memcpy(ids, bytes.data() + at, sizeof ids);
+        std::memcpy(values, bytes.data() + at + sizeof ids, sizeof values);
+        const auto first = index.find(ids[0]), second = index.find(ids[1]);
+        if (first == index.end() || second == index.end()) continue;
+        TangentialSpring spring;
+        spring.displacement = Vector3r(values[0], values[1], values[2]);
+        spring.twist = values[3];
+        spring.normal = Vector3r(values[4], values[5], values[6]);
+        spring.energy = values[7];
+        springs.push_back({{first->second, second->second}, spring});
+      }
+    }
+    data_.restoreSprings(std::move(springs));
   }
 
   // Why the last step was not kept, worst first: (cause 'crossed' or 'overlap', YADE id of the body, of the other
@@ -279,37 +352,39 @@ bp::tuple asTuple(const PairEvaluation& e) {
 bp::tuple planeContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& planePoint,
                        const Vector3r& planeNormal, const HertzMaterial& meshMaterial,
                        const HertzMaterial& planeMaterial, const Vector3r& vel, const Vector3r& angVel, Real gamma,
-                       const std::string& regime) {
+                       const std::string& regime, const std::string& friction) {
   requireFinite(planePoint, "plane_point");
   requireFinite(planeNormal, "plane_normal");
   if (planeNormal.norm() == 0) throw std::invalid_argument("plane_normal must not be zero");
   const PairEvaluation e = roundedmesh::planeContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
                                                      Plane{planePoint, planeNormal.normalized()}, planeMaterial,
-                                                     pressureOptions(gamma, regime));
+                                                     pressureOptions(gamma, regime), false, frictionLaw(friction));
   return bp::make_tuple(e.onFirst.force, e.onFirst.torque);
 }
 
 bp::tuple sphereContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& centre,
                         Real radius, const HertzMaterial& meshMaterial, const HertzMaterial& sphereMaterial,
                         const Vector3r& vel, const Vector3r& angVel, const Vector3r& sphereVel,
-                        const Vector3r& sphereAngVel, Real gamma, const std::string& regime, bool details) {
+                        const Vector3r& sphereAngVel, Real gamma, const std::string& regime, bool details,
+                        const std::string& friction) {
   requireFinite(centre, "centre");
   if (!(std::isfinite(radius) && radius > 0))
     throw std::invalid_argument("radius must be positive and finite, got " + std::to_string(radius));
   return asTuple(roundedmesh::sphereContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
                                             Sphere{radius},
                                             bodyState(centre, Quaternionr::Identity(), sphereVel, sphereAngVel, 2),
-                                            sphereMaterial, pressureOptions(gamma, regime), details));
+                                            sphereMaterial, pressureOptions(gamma, regime), details,
+                                            frictionLaw(friction)));
 }
 
 bp::tuple bodyContact(const BodyMesh& mesh1, const Vector3r& pos1, const Quaternionr& ori1, const BodyMesh& mesh2,
                       const Vector3r& pos2, const Quaternionr& ori2, const HertzMaterial& material1,
                       const HertzMaterial& material2, const Vector3r& vel1, const Vector3r& angVel1,
                       const Vector3r& vel2, const Vector3r& angVel2, Real gamma, const std::string& regime,
-                      bool details) {
+                      bool details, const std::string& friction) {
   return asTuple(roundedmesh::bodyContact(roundedBody(0, mesh1, material1), bodyState(pos1, ori1, vel1, angVel1, 1),
                                           roundedBody(1, mesh2, material2), bodyState(pos2, ori2, vel2, angVel2, 2),
-                                          pressureOptions(gamma, regime), details));
+                                          pressureOptions(gamma, regime), details, frictionLaw(friction)));
 }
 
 const char* partnerKindName(const Plane&) { return "Plane"; }
@@ -325,12 +400,16 @@ void exposeEngine() {
       .def("add_body", &Engine::addBody, (bp::arg("id"), bp::arg("mesh"), bp::arg("material")))
       .def("add_partner", &Engine::addPartner, (bp::arg("body"), bp::arg("material")))
       .def("add_sphere", &Engine::addSphere, (bp::arg("body"), bp::arg("material")))
-      .def("set_options", &Engine::setOptions, (bp::arg("gamma"), bp::arg("regime"), bp::arg("stop_overlap")))
+      .def("set_options", &Engine::setOptions,
+           (bp::arg("gamma"), bp::arg("regime"), bp::arg("friction"), bp::arg("stop_overlap")))
       .def("step", &Engine::step, bp::arg("O"))
       .def("stops", &Engine::stops)
       .def("fastest", &Engine::fastest)
       .def("stability_limit", &Engine::stabilityLimit,
-           (bp::arg("body_masses"), bp::arg("partner_masses"), bp::arg("impact_speed") = 0.0))
+           (bp::arg("body_masses"), bp::arg("partner_masses"), bp::arg("body_inertias"), bp::arg("partner_inertias"),
+            bp::arg("impact_speed") = 0.0))
+      .def("springs", &Engine::springs)
+      .def("restore_springs", &Engine::restoreSprings, bp::arg("record"))
       .add_property("statistics", &Engine::statistics)
       .def("contacts", &Engine::contacts)
       .def("energy", &Engine::energy)
@@ -346,23 +425,26 @@ void exposeEngine() {
   bp::def("plane_contact", &planeContact,
           (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("plane_point"), bp::arg("plane_normal"),
            bp::arg("mesh_material"), bp::arg("plane_material"), bp::arg("vel") = Vector3r(Vector3r::Zero()),
-           bp::arg("ang_vel") = Vector3r(Vector3r::Zero()), bp::arg("gamma") = 10.0, bp::arg("regime") = "auto"),
+           bp::arg("ang_vel") = Vector3r(Vector3r::Zero()), bp::arg("gamma") = 10.0, bp::arg("regime") = "auto",
+           bp::arg("friction") = "spring"),
           "(force, torque) on a rounded body at pos, ori, moving with vel, ang_vel, pressed against the fixed\n"
           "plane through plane_point with plane_normal pointing toward the body side. Torque is about pos.\n"
-          "gamma and regime ('auto', 'quadrature', 'direct') select the pressure integration (Eq. 14).");
+          "gamma and regime ('auto', 'quadrature', 'direct') select the pressure integration (Eq. 14); friction\n"
+          "('spring', 'viscous') the tangential law, as for rm.engine: the spring of a contact evaluated once has no\n"
+          "history, so only its damping acts.");
 
   const Vector3r zero = Vector3r::Zero();
   bp::def("_sphere_contact", &sphereContact,
           (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("centre"), bp::arg("radius"),
            bp::arg("mesh_material"), bp::arg("sphere_material"), bp::arg("vel") = zero, bp::arg("ang_vel") = zero,
            bp::arg("sphere_vel") = zero, bp::arg("sphere_ang_vel") = zero, bp::arg("gamma") = 10.0,
-           bp::arg("regime") = "auto", bp::arg("details") = false),
+           bp::arg("regime") = "auto", bp::arg("details") = false, bp::arg("friction") = "spring"),
           "(F1, T1, F2, T2, contacts): see roundedmesh.sphere_contact.");
   bp::def("_body_contact", &bodyContact,
           (bp::arg("mesh1"), bp::arg("pos1"), bp::arg("ori1"), bp::arg("mesh2"), bp::arg("pos2"), bp::arg("ori2"),
            bp::arg("material1"), bp::arg("material2"), bp::arg("vel1") = zero, bp::arg("ang_vel1") = zero,
            bp::arg("vel2") = zero, bp::arg("ang_vel2") = zero, bp::arg("gamma") = 10.0, bp::arg("regime") = "auto",
-           bp::arg("details") = false),
+           bp::arg("details") = false, bp::arg("friction") = "spring"),
           "(F1, T1, F2, T2, contacts): see roundedmesh.body_contact.");
 }
 

@@ -45,9 +45,10 @@ void exposeMaterial() {
       "Material of a body in Hertz contact.\n\n"
       "HertzMaterial(young, poisson, density, damping=0.0, friction=0.0, tangential_damping=0.0): Young's\n"
       "modulus [Pa] (math.inf for a rigid body), Poisson's ratio in (-1, 0.5), density [kg/m^3], normal damping\n"
-      "constant A of Eq. 7 [s], Coulomb friction coefficient mu and tangential damping constant c [N s/m] of\n"
-      "Eqs. 18-21 (a contact's mu is the smaller of the two, its A and c the means). Read-only; raises\n"
-      "ValueError naming a parameter out of range.",
+      "constant A of Eq. 7 [s], Coulomb friction coefficient mu and tangential damping constant c [N s/m]: the\n"
+      "dashpot beside each contact's tangential spring, or the viscous constant of Eqs. 18-21 under\n"
+      "rm.engine(friction='viscous') (a contact's mu is the smaller of the two, its A and c the means). Read-only;\n"
+      "raises ValueError naming a parameter out of range.",
       bp::no_init)
       .def("__init__", bp::make_constructor(&makeMaterial, bp::default_call_policies(),
                                             (bp::arg("young"), bp::arg("poisson"), bp::arg("density"),

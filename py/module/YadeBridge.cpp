@@ -82,6 +82,7 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
   const bp::object bodies = omega.attr("bodies");
   std::vector<int> missing;
   data.resize(model);
+  data.timeStep = bp::extract<Real>(omega.attr("dt"));
   for (size_t b = 0; b < model.bodies.size(); ++b) {
     const bp::object body = bodyOrNone(bodies, model.bodies[b].id);
     if (body.is_none()) {

@@ -6,7 +6,9 @@ validation, for pictures, and to look inside a contact.
     triangle_contacts(mesh1, pos1, ori1, mesh2_or_radius, pos2, ori2, ...) -> the triangle pairs in contact
 
 Forces [N] and torques [N m] are global; each torque is about its own body's position. Velocities [m/s] and
-angular velocities [rad/s] are global. gamma and regime choose the pressure integration as for engine().
+angular velocities [rad/s] are global. gamma and regime choose the pressure integration and friction ('spring' or
+'viscous') the tangential law, as for engine(); a contact evaluated once has no history, so the spring's
+displacement is zero and only its damping -c v_t acts (capped by Coulomb).
 """
 import numpy as np
 
@@ -16,23 +18,23 @@ _ZERO = (0.0, 0.0, 0.0)
 
 
 def body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
-                 vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto"):
+                 vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto", friction="spring"):
     """(force on 1, torque on 1, force on 2, torque on 2) of two rounded bodies: Mesh mesh1 in its principal
     frame placed at pos1 turned by ori1, likewise mesh2; materials are HertzMaterials."""
     return _body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1, ang_vel1, vel2, ang_vel2,
-                         gamma, regime)[:4]
+                         gamma, regime, False, friction)[:4]
 
 
 def sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel=_ZERO, ang_vel=_ZERO,
-                   sphere_vel=_ZERO, sphere_ang_vel=_ZERO, gamma=10.0, regime="auto"):
+                   sphere_vel=_ZERO, sphere_ang_vel=_ZERO, gamma=10.0, regime="auto", friction="spring"):
     """(force on the body, torque on it, force on the sphere, torque on it) of a rounded body against an
     analytic sphere of `radius` [m] centred at `centre` (what a YADE Sphere partner is)."""
     return _sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel, ang_vel, sphere_vel,
-                           sphere_ang_vel, gamma, regime)[:4]
+                           sphere_ang_vel, gamma, regime, False, friction)[:4]
 
 
 def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
-                      vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto"):
+                      vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto", friction="spring"):
     """The triangle pairs in contact in body_contact's configuration, as a dict of numpy arrays with one row
     per pair. `mesh2` may instead be a number: the radius of an analytic sphere centred at pos2 (ori2 is then
     ignored). Columns:
@@ -43,15 +45,16 @@ def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2
         point, normal            c_eff [m] and n12 (rows of 3, global)
         regime                   'quadrature' or 'direct' (Eq. 14)
         normal_force             F_n on body 2 along n12 [N]
-        tangential_force         F_t on body 2 (rows of 3, global) [N]; body 1 receives the opposite
-        sliding                  whether Eq. 21 chose the sliding regime
+        tangential_force         F_t on body 2 (rows of 3, global) [N]; body 1 receives the opposite. With the
+                                 spring, each triangle's share of the pair's force (by its normal force) and twist
+        sliding                  whether the pair's spring slides (viscous: whether Eq. 21 chose sliding)
         node_forces1, node_forces2   Eq. 15 on each triangle's corners [N] (NaN for the analytic sphere)"""
     if isinstance(mesh2, (int, float)):
         listed = _sphere_contact(mesh1, pos1, ori1, pos2, float(mesh2), material1, material2, vel1, ang_vel1, vel2,
-                                 ang_vel2, gamma, regime, True)[4]
+                                 ang_vel2, gamma, regime, True, friction)[4]
     else:
         listed = _body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1, ang_vel1, vel2,
-                               ang_vel2, gamma, regime, True)[4]
+                               ang_vel2, gamma, regime, True, friction)[4]
     columns = {}
     for name in ("triangle1", "triangle2"):
         columns[name] = np.array([c[name] for c in listed], dtype=int)

@@ -15,10 +15,15 @@ O.saveTmp/O.loadTmp and the GUI's reload keep the rounded bodies:
     roundedmesh.partner.<id>   a contact partner: its material
     roundedmesh.sphere.<id>    a sphere body: its material
     roundedmesh.revision       changes with every edit; the engine rebuilds its state when it differs
+    roundedmesh.springs        the contacts' tangential springs after the last step (doc/physics.md, "Friction"):
+                               "<token>:<base64 of Engine.springs()>", written after every step that has or had
+                               springs; a token the engine did not write itself (a loaded scene) makes it take them
 YADE cannot delete a tag; an entry set to "" is a deleted one.
 """
+import ast
 import base64
 import functools
+import itertools
 import hashlib
 import json
 import math
@@ -42,7 +47,8 @@ _ENGINE_COMMAND = "__import__('roundedmesh').scene.step"
 # sphere's radius), a pair whose overlap grows stops the run (kStopOverlap in pkg/engine/ContactModel.hpp;
 # doc/physics.md, "Deep overlaps and fast impacts").
 STOP_OVERLAP = 0.5
-_ENGINE_OPTIONS = {"gamma": 10.0, "regime": "auto", "stop_overlap": STOP_OVERLAP}
+_ENGINE_OPTIONS = {"gamma": 10.0, "regime": "auto", "friction": "spring", "stop_overlap": STOP_OVERLAP}
+_FRICTION_LAWS = ("spring", "viscous")
 
 
 # --- what the scene's tags hold -----------------------------------------------------------------------
@@ -345,6 +351,10 @@ def engine(label="", **options):
       gamma        -- expected number of quadrature points in a contact circle below which a triangle contact
                       uses the direct regime (Eq. 14); default 10, as in the paper
       regime       -- 'auto' (Eq. 14), or 'quadrature' / 'direct' to force one regime (for validation)
+      friction     -- the tangential law of every contact: 'spring' (default), an elastic spring-dashpot per body
+                      pair capped by Coulomb, with which bodies rest on slopes; or 'viscous', the paper's no-slip
+                      force -c v_t (Eqs. 18-21), with which nothing in contact ever stands still (doc/physics.md,
+                      "Friction")
       stop_overlap -- a pair whose overlap grows past this fraction of the smaller side's size (r_eq, or a
                       sphere's radius) stops the run; default STOP_OVERLAP = 0.5, math.inf never
     A body whose centre passes through a Wall, Facet or Box it was near in the step before stops the run too
@@ -362,7 +372,7 @@ def engine(label="", **options):
     if not chosen["stop_overlap"] > 0:
         raise ValueError(f"stop_overlap: must be positive (math.inf: never), got {chosen['stop_overlap']!r}")
     chosen["stop_overlap"] = float(chosen["stop_overlap"])
-    for name, value in (("regime", chosen["regime"]), ("label", label)):
+    for name, value in (("regime", chosen["regime"]), ("friction", chosen["friction"]), ("label", label)):
         if not isinstance(value, str):
             raise TypeError(f"{name}: expected a string, got {value!r}")
     Engine().set_options(**chosen)
@@ -377,7 +387,9 @@ def _literal(value):
 
 def critical_timestep(impact_speed=None):
     """Largest stable O.dt for the current scene's contacts of rounded bodies and sphere bodies with each other
-    and with partners [s], inf if there are none (see doc/physics.md, "Time step"). Use a fraction of it for accuracy.
+    and with partners [s], inf if there are none (see doc/physics.md, "Time step"): the normal contacts' limit and,
+    with friction, the tangential one (its stiffness and damping c), for the friction law of the roundedmesh
+    engine in O.engines (the default 'spring' if there is none yet). Use a fraction of it for accuracy.
 
     With impact_speed [m/s], the largest impact speed the scene will see, the step is also small enough to resolve
     such an impact: bodies meeting at that speed move in one step at most a tenth of the depth the impact
@@ -388,7 +400,7 @@ def critical_timestep(impact_speed=None):
         if not (math.isfinite(impact_speed) and impact_speed >= 0):
             raise ValueError(f"impact_speed: must be a finite speed >= 0 [m/s], got {impact_speed!r}")
     state = _current_state()
-    return state.stability(impact_speed or 0.0)[0] if state else math.inf
+    return state.stability(_engine_options(), impact_speed or 0.0)[0] if state else math.inf
 
 
 _STATISTICS = ("body_pairs", "touching_pairs", "candidates", "rejected_not_facing", "rejected_no_overlap",
@@ -413,7 +425,8 @@ def statistics():
                                rounded body counts here: the rounded body's triangles meet the sphere)
       sphere_contacts          contacts of a sphere body with another sphere body or a partner, one per pair
                                (the whole contact circle: no triangles, so not in candidates or rejected_*)
-      sliding_contacts         triangle and sphere contacts sliding (Eq. 21)
+      sliding_contacts         triangle and sphere contacts sliding: all of a pair's whose spring slides (under the
+                               viscous law, each by Eq. 21)
       neighbour_rebuilds       whether the broad phase's neighbour list was rebuilt (0 or 1)
       candidate_rebuilds       pairs whose candidate triangle pairs were rebuilt (from their near list)
       near_rebuilds            pairs whose near list was searched again in the triangle trees
@@ -445,7 +458,8 @@ def contacts():
                           contact alone can run through both bodies at a slant); what the stop rule compares
       triangle_contacts   number of triangle contacts (1 for a sphere body against a sphere body or a partner:
                           one contact over the whole circle)
-      sliding             whether any of them slides (Eq. 21)
+      sliding             whether the pair's tangential spring slides (under the viscous law: whether any of
+                          its triangle contacts does, Eq. 21)
     A pair's forces are the sums of its triangle contacts', normal and tangential (friction)."""
     state = _current_state()
     if state is None or state.stepped_iteration is None:
@@ -520,44 +534,93 @@ class _SceneState:
                 materials.append(HertzMaterial(*json.loads(record)))
                 (self.engine.add_sphere if kind == "sphere" else self.engine.add_partner)(body, materials[-1])
                 self.partner_ids.append(body_id)
-        for m in materials:
-            if m.friction > 0 and m.tangential_damping == 0 and not any(o.tangential_damping > 0 for o in materials):
-                warnings.warn(f"roundedmesh: friction={m.friction:g} with tangential_damping=0 on every material: "
-                              "Eq. 21 lets no contact slide and the no-slip force is zero, so there is no friction; "
-                              "give a tangential damping c (doc/physics.md)", RuntimeWarning)
-                break
+        self.materials = materials
         self.options = None
         self.checked_dt = None
         self.stepped_iteration = None  # O.iter of the last step computed; None before the first
         self.warned_fast = False  # whether a body has been too fast for the step (_warn_fast_bodies)
+        self.spring_token = None  # the token of the springs the engine holds (roundedmesh.springs); None: none
 
-    def stability(self, impact_speed=0.0):
-        """(limit [s], body id, id of the other body) for the masses the bodies have in YADE now, and with
-        impact_speed > 0 for impacts at that speed [m/s]. A body erased since the last step (the next step forgets
-        it) is left out: infinite mass puts no limit."""
+    def set_options(self, options):
+        if options != self.options:
+            self.engine.set_options(**options)
+            if options["friction"] == "viscous" and (self.options is None or self.options["friction"] != "viscous"):
+                _warn_viscous_without_damping(self.materials)
+            self.options = options
+            self.checked_dt = None
+
+    def stability(self, options, impact_speed=0.0):
+        """(limit [s], body id, id of the other body, whether the tangential contact sets it) for the masses and
+        inertias the bodies have in YADE now and the engine options, and with impact_speed > 0 for impacts at that
+        speed [m/s]. A body erased since the last step (the next step forgets it) is left out: infinite mass puts
+        no limit."""
+        self.set_options(options)
         bodies = [_body_or_none(i) for i in self.body_ids]
         partners = [_body_or_none(i) for i in self.partner_ids]
         return self.engine.stability_limit([b.state.mass if b else math.inf for b in bodies],
                                            [p.state.mass if p and p.dynamic else 0.0 for p in partners],
+                                           [b.state.inertia if b else Vector3.Zero for b in bodies],
+                                           [p.state.inertia if p and p.dynamic else Vector3.Zero for p in partners],
                                            float(impact_speed))
 
     def prepare(self, options):
-        options = {**_ENGINE_OPTIONS, **options}  # an engine saved before an option existed has its default
-        if options != self.options:
-            self.engine.set_options(**options)
-            self.options = options
+        self.set_options(options)
         _check_engines()
         if O.dt != self.checked_dt:
-            limit, body, other = self.stability()
+            limit, body, other, tangential = self.stability(options)
             if O.dt > limit:
+                which = ("tangential contact (friction: its stiffness and tangential damping c)" if tangential
+                         else "contact")
                 raise ValueError(
-                    f"O.dt = {O.dt:g} s is above the stability limit {limit:g} s of the contact between "
+                    f"O.dt = {O.dt:g} s is above the stability limit {limit:g} s of the {which} between "
                     f"{'rounded' if body in self.body_ids else 'sphere'} body {body} and body {other} "
                     "(roundedmesh.critical_timestep()); reduce O.dt")
             self.checked_dt = O.dt
 
+    def take_springs(self):
+        """Before a step: the scene's springs (roundedmesh.springs) into the engine, unless it wrote them itself."""
+        record = _tag("springs")
+        token, _, data = record.partition(":")
+        if (token or None) != self.spring_token:
+            self.engine.restore_springs(base64.b64decode(data) if token else None)
+            self.spring_token = token or None
+
+    def keep_springs(self):
+        """After a step: the engine's springs into the scene, so that O.save keeps them."""
+        data = self.engine.springs()
+        if data is None and self.spring_token is None:
+            return
+        self.spring_token = None if data is None else f"{_PROCESS}.{next(_SPRING_WRITES)}"
+        _set_tag("springs", "" if data is None else self.spring_token + ":" + base64.b64encode(data).decode("ascii"))
+
 
 _state = None
+_PROCESS = uuid.uuid4().hex[:12]   # with a count, makes each write of roundedmesh.springs unique
+_SPRING_WRITES = itertools.count()
+
+
+def _warn_viscous_without_damping(materials):
+    for m in materials:
+        if m.friction > 0 and m.tangential_damping == 0 and not any(o.tangential_damping > 0 for o in materials):
+            warnings.warn(f"roundedmesh: friction={m.friction:g} with tangential_damping=0 on every material under "
+                          "the viscous friction law: Eq. 21 lets no contact slide and the no-slip force is zero, so "
+                          "there is no friction; give a tangential damping c, or use the default friction='spring' "
+                          "(doc/physics.md)", RuntimeWarning)
+            break
+
+
+def _engine_options():
+    """The options of the roundedmesh engine in O.engines (its PyRunner's command), the defaults for any it does not
+    name (a scene saved before the option existed) or if there is no such engine."""
+    for e in O.engines:
+        if isinstance(e, PyRunner) and e.command.startswith(_ENGINE_COMMAND):
+            try:
+                call = ast.parse(e.command, mode="eval").body
+                given = {k.arg: ast.literal_eval(k.value) for k in call.keywords}
+            except (SyntaxError, ValueError, AttributeError):
+                given = {}
+            return {**_ENGINE_OPTIONS, **{k: v for k, v in given.items() if k in _ENGINE_OPTIONS}}
+    return dict(_ENGINE_OPTIONS)
 
 
 def _current_state():
@@ -650,8 +713,10 @@ def step(**options):
     state = _current_state()
     if state is None:
         return
+    options = {**_ENGINE_OPTIONS, **options}  # a scene saved before an option existed has the default
     state.prepare(options)
     state.engine.keep_triangle_contacts = _keeps_triangle_forces()
+    state.take_springs()
     missing = state.engine.step(O)
     if missing:  # bodies erased from the scene leave the engine too
         _forget(missing)
@@ -660,6 +725,7 @@ def step(**options):
     stops = state.engine.stops()
     if stops:  # nothing was applied, and the step is not kept: redoing it stops again
         raise ValueError(_stop_message(state, stops))
+    state.keep_springs()
     first = state.stepped_iteration is None
     state.stepped_iteration = O.iter
     if O.trackEnergy:
@@ -762,7 +828,7 @@ def _stop_message(state, stops):
     own = _size_name(state, body)
     own_size = size if not both_sized else None
     if speed > 0:
-        bound = state.stability(speed)[0]
+        bound = state.stability(state.options, speed)[0]
         moves = f"{speed * O.dt / own_size:.2g} {own}" if own_size else f"{speed * O.dt:.3g} m"
         if O.dt > bound:
             advice = (f"At {speed:.3g} m/s it moves {moves} per step (O.dt = {O.dt:.3g} s): reduce O.dt to "
@@ -789,7 +855,7 @@ def _warn_fast_bodies(state):
     if not fraction > FAST_STEP:
         return
     state.warned_fast = True
-    bound = state.stability(speed)[0]
+    bound = state.stability(state.options, speed)[0]
     warnings.warn(f"roundedmesh: {_describe(state, body)} moves {fraction:.2g} of its contact depth ({depth:.3g} m, "
                   f"0.1 {_size_name(state, body)}) in one step at {speed:.3g} m/s with O.dt = {O.dt:.3g} s: an impact "
                   f"at this speed is not resolved; use O.dt <= rm.critical_timestep(impact_speed={speed:.3g}) = "

@@ -8,17 +8,20 @@ S3 -- a meshed sphere dropped on a YADE Wall under gravity with normal damping:
     S3 (the parameters), build_bouncing_sphere(subdivisions) -> body id, trace_height(...)
 S4 -- a meshed sphere resting on a YADE Wall, pushed sideways by a force rising past mu m g:
     S4 (the parameters), friction_ramp(subdivisions) -> applied and friction forces over time
+Slope (ours, doc/validation.md) -- the gummy bear or the pear resting on a Wall under gravity tilted by an angle:
+    SLOPE (the parameters), SLOPE_POSES, build_slope(shape, angle) -> body id, trace_slope(...) -> its motion
 """
 import math
 from dataclasses import dataclass
 
 import numpy as np
 from yade import ForceResetter, NewtonIntegrator, O, PyRunner, utils
-from yade.minieigenHP import Quaternion
+from yade.minieigenHP import Quaternion, Vector3
 
 from . import progress
 from ._core import HertzMaterial, Mesh, plane_contact
-from .scene import add_body, assign_material, engine, statistics
+from .scene import add_body, assign_material, critical_timestep, engine, statistics
+from .shapes import reference_shape
 
 RIGID = HertzMaterial(young=math.inf, poisson=0.0, density=1.0)
 
@@ -95,9 +98,10 @@ def trace_height(body_id, duration, label=None):
 class FrictionRamp:
     """Scene S4 (ours where scenes.md is silent): S1's particle resting on a Wall under gravity, its rotations
     blocked so that it can only slide (the Coulomb law of Eq. 18 is the one of a sliding block), pushed along
-    x at its centre by a force rising linearly from 0 to 1.5 mu m g. The tangential damping c makes the slip
-    at the onset of sliding mu m g / c = 6 mm/s, and the ramp is slow enough that inertia (m dv/dt) stays
-    below 1 % of mu m g before sliding."""
+    x at its centre by a force rising linearly from 0 to 1.5 mu m g. With the default tangential spring the
+    sphere stands until the push reaches mu m g (its spring stretching by 0.13 mm), then slides; c damps the
+    spring. Under the paper's viscous law (engine(friction='viscous')) c makes the slip at the onset of sliding
+    mu m g / c = 6 mm/s. The ramp is slow enough that inertia (m dv/dt) stays below 1 % of mu m g before sliding."""
     radius: float = 0.025           # [m]
     gravity: float = 9.81           # [m/s^2]
     friction: float = 0.5
@@ -113,11 +117,11 @@ class FrictionRamp:
 S4 = FrictionRamp()
 
 
-def friction_ramp(subdivisions, scene=S4, label=None):
-    """Runs S4 with an icosphere of `subdivisions` (2, 3: 162, 642 nodes). Returns a dict of arrays over the
-    ramp's steps: time [s], applied force F_A [N], friction force F_t on the sphere (x component of the
-    contact force, opposing F_A) [N], sphere displacement along x [m], sliding triangle contacts, and
-    f_max = mu m g [N]."""
+def friction_ramp(subdivisions, scene=S4, label=None, law="spring"):
+    """Runs S4 with an icosphere of `subdivisions` (2, 3: 162, 642 nodes) under the friction law `law` ('spring' or
+    'viscous'). Returns a dict of arrays over the ramp's steps: time [s], applied force F_A [N], friction force F_t
+    on the sphere (x component of the contact force, opposing F_A) [N], sphere displacement along x [m], sliding
+    triangle contacts, and f_max = mu m g [N]."""
     O.reset()
     mesh = Mesh.icosphere(scene.radius, subdivisions)
     mass = scene.particle.density * mesh.volume
@@ -130,8 +134,8 @@ def friction_ramp(subdivisions, scene=S4, label=None):
     f_max = scene.friction * mass * scene.gravity
     rate = 1.5 * f_max / scene.ramp_time
     push = f"max(O.time - {scene.settle_time!r}, 0.0) * {rate!r}"  # F_A(t) [N], evaluated by YADE each step
-    O.engines = [ForceResetter(), engine(), PyRunner(command=f"O.forces.addF({sphere}, ({push}, 0, 0))", iterPeriod=1,
-                                                     initRun=True),
+    O.engines = [ForceResetter(), engine(friction=law),
+                 PyRunner(command=f"O.forces.addF({sphere}, ({push}, 0, 0))", iterPeriod=1, initRun=True),
                  NewtonIntegrator(gravity=(0, 0, -scene.gravity), damping=0)]
     O.dt = scene.timestep
     settle = int(round(scene.settle_time / O.dt))
@@ -152,3 +156,73 @@ def friction_ramp(subdivisions, scene=S4, label=None):
             reporter.update(i + 1)
     out["f_max"] = f_max
     return out
+
+
+@dataclass(frozen=True)
+class SlopeScene:
+    """A body resting on a slope (ours, for the friction law; doc/validation.md): S1's particle and box materials with
+    S1's normal damping A = 0.01 s, mu = 0.5 and the tangential damping c = 100 N s/m of S4, a Wall for the floor and
+    gravity tilted by `angle` about y (a tilted Wall is not possible), so that +x points down the slope. The body
+    starts at rest, its lowest node `gap` above the floor, and the time step is `timestep_fraction` of
+    rm.critical_timestep()."""
+    angle: float = 5.0              # [degrees]; the friction angle of mu = 0.5 is 26.57
+    gravity: float = 9.81           # [m/s^2]
+    gap: float = 1e-4               # [m]
+    timestep_fraction: float = 0.5
+    particle: HertzMaterial = HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-2, friction=0.5,
+                                            tangential_damping=100.0)
+    floor: HertzMaterial = HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=1e-2, friction=0.5,
+                                         tangential_damping=100.0)
+
+
+SLOPE = SlopeScene()
+
+# How each shape lies on the slope (orientation of its principal frame, YADE's blockedDOFs). The gummy bear lies on
+# its back (its thinnest principal axis normal to the floor). The pear has no pose in which it stands still on a
+# slope by itself: upright it topples, and on its side (its axis, x, along the fall line, the narrow end up the
+# slope) it rolls about its own axis, which no friction law resists (the model, like the paper's, has no rolling
+# resistance); its rotation about the fall line (global x) is blocked, which leaves it free to rock and turn on
+# its side.
+SLOPE_POSES = {"gummy_bear": (Quaternion.Identity, ""), "pear": (Quaternion((0, 0, 1), math.pi), "X")}
+
+
+def build_slope(shape, angle=None, scene=SLOPE, law="spring", blocked=None, **material_changes):
+    """Resets YADE and builds the slope scene with `shape` ('gummy_bear' or 'pear', in its SLOPE_POSES pose) at
+    `angle` [degrees] (default scene.angle) under the engine's friction law `law` ('spring' or 'viscous').
+    `blocked`: YADE's blockedDOFs of the body, if not the pose's. material_changes (friction, tangential_damping, ...)
+    replace those of both materials. Returns the body's id."""
+    O.reset()
+    angle = scene.angle if angle is None else angle
+    materials = []
+    for m in (scene.particle, scene.floor):
+        values = dict(young=m.young, poisson=m.poisson, density=m.density, damping=m.damping, friction=m.friction,
+                      tangential_damping=m.tangential_damping)
+        values.update(material_changes)
+        materials.append(HertzMaterial(**values))
+    ori, pose_blocked = SLOPE_POSES[shape]
+    mesh = reference_shape(shape)
+    lowest = min((ori * Vector3(*x))[2] for x in mesh.vertices)
+    body = add_body(mesh, pos=(0, 0, scene.gap - lowest), ori=ori, material=materials[0])
+    O.bodies[body].state.blockedDOFs = pose_blocked if blocked is None else blocked
+    floor = O.bodies.append(utils.wall(0, axis=2, sense=1))
+    assign_material(floor, materials[1])
+    a = math.radians(angle)
+    O.engines = [ForceResetter(), engine(friction=law),
+                 NewtonIntegrator(gravity=(scene.gravity * math.sin(a), 0, -scene.gravity * math.cos(a)), damping=0)]
+    O.dt = scene.timestep_fraction * critical_timestep()
+    return body
+
+
+def trace_slope(body_id, duration, samples=100, label=None):
+    """Runs the current scene for `duration` [s]; returns (times [s], positions [m], shape (samples + 1, 3)) of the
+    body, sampled evenly."""
+    steps = max(int(round(duration / O.dt / samples)), 1)
+    times, positions = [O.time], [tuple(O.bodies[body_id].state.pos)]
+    reporter = progress.Progress(samples, label) if label else None
+    for i in range(samples):
+        O.run(steps, True)
+        times.append(O.time)
+        positions.append(tuple(O.bodies[body_id].state.pos))
+        if reporter:
+            reporter.update(i + 1)
+    return np.array(times), np.array(positions)

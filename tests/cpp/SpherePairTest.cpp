@@ -140,9 +140,14 @@ TEST(SpherePair, OnlySphereBodiesAndNotWithinAClump) {
 
 // Friction on a sphere resting on a Wall while the sphere slides along x and spins: the slip at the contact
 // point c = (0, 0, -(r - delta)) from the centre is v + w x c. Slow slip: F_t = -c_t v_slip (Eq. 20, the whole
-// circle in S); fast slip: F_t = -mu F_n v_slip / |v_slip| (Eq. 19). The torque on the sphere is c x F_t.
+// circle in S); fast slip: F_t = -mu F_n v_slip / |v_slip| (Eq. 19). The torque on the sphere is c x F_t. The same
+// for the spring in a first step (no displacement yet: its dashpot alone, capped at mu F_n).
 // Tolerance 1e-12 relative (round-off).
-TEST(SpherePair, FrictionOpposesTheSlipAndIsCappedByCoulomb) {
+class SpherePairFriction : public testing::TestWithParam<FrictionLaw> {};
+
+INSTANTIATE_TEST_SUITE_P(Laws, SpherePairFriction, testing::Values(FrictionLaw::Viscous, FrictionLaw::Spring));
+
+TEST_P(SpherePairFriction, OpposesTheSlipAndIsCappedByCoulomb) {
   const Real r = 0.01, overlap = 2e-4;
   HertzMaterial ball = kSoft, floor = kStiff;
   ball.friction = 0.5;
@@ -155,6 +160,7 @@ TEST(SpherePair, FrictionOpposesTheSlipAndIsCappedByCoulomb) {
   for (Real speed : {1e-3, 10.0}) {
     const Vector3r v(speed, 0, 0), w(0, 0.3 * speed / r, 0);
     Scene scene;
+    scene.model.friction = GetParam();
     scene.add(Sphere{r}, ball, moving(Vector3r(0, 0, r - overlap), v, w), true);
     scene.add(Wall{2, 1}, floor, test::at(Vector3r::Zero()), false);
     scene.step();

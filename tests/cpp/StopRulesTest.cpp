@@ -174,16 +174,16 @@ TEST(CriticalTimeStep, TheSceneLimitForAnImpactSpeed) {
   Scene scene(Wall{2, 1});
   const Real m = 0.131;
   const StabilityLimit plain = stabilityLimit(scene.model, {m}, {0});
-  EXPECT_EQ(stabilityLimit(scene.model, {m}, {0}, 0).timeStep, plain.timeStep);
+  EXPECT_EQ(stabilityLimit(scene.model, {m}, {0}, {}, {}, 0).timeStep, plain.timeStep);
   const Real E = Ip2_HertzMaterial_HertzMaterial_HertzPhys(kRubber, kRubber).effectiveModulus;
   const Real r = scene.model.bodies[0].equivalentRadius, depth = kDeepestOverlap * r;
   for (Real speed : {1e-7, 1e-3, 0.3, 30.0}) {
     const Real expected = std::min({plain.timeStep, impactTimeStep(m, E, r, depth, speed),
                                     impactTimeStep(m / 2, E, r / 2, depth, speed)});
-    EXPECT_DOUBLE_EQ(stabilityLimit(scene.model, {m}, {0}, speed).timeStep, expected) << speed;
+    EXPECT_DOUBLE_EQ(stabilityLimit(scene.model, {m}, {0}, {}, {}, speed).timeStep, expected) << speed;
   }
-  EXPECT_EQ(stabilityLimit(scene.model, {m}, {0}, 1e-7).timeStep, plain.timeStep);
-  EXPECT_LT(stabilityLimit(scene.model, {m}, {0}, 1e-5).timeStep, plain.timeStep);
+  EXPECT_EQ(stabilityLimit(scene.model, {m}, {0}, {}, {}, 1e-7).timeStep, plain.timeStep);
+  EXPECT_LT(stabilityLimit(scene.model, {m}, {0}, {}, {}, 1e-5).timeStep, plain.timeStep);
 }
 
 }  // namespace

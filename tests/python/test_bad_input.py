@@ -2,6 +2,7 @@
 import math
 import os
 import pickle
+import warnings
 import subprocess
 import textwrap
 
@@ -214,15 +215,26 @@ def test_engines_edited_during_a_run(edit, message):
         O.run(3, True)
 
 
-# Eq. 21 never lets a contact slide without tangential damping, and the no-slip force is then zero: friction
-# without c does nothing, which the user hears about once.
+# Under the paper's viscous law, Eq. 21 never lets a contact slide without tangential damping, and the no-slip force
+# is then zero: friction without c does nothing, which the user hears about once. The default spring needs no c.
 def test_friction_without_tangential_damping_is_announced():
     bouncing_sphere_scene()
     rm.assign_material(1, rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, friction=0.5))
-    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(damping=0)]
+    O.engines = [ForceResetter(), rm.engine(friction="viscous"), NewtonIntegrator(damping=0)]
     O.dt = 1e-5
-    with pytest.warns(RuntimeWarning, match="friction=0.5 .* tangential_damping=0 .* no friction"):
+    with pytest.warns(RuntimeWarning, match="friction=0.5 .* tangential_damping=0 .* viscous .* no friction"):
         O.step()
+    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(damping=0)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        O.step()
+
+
+def test_an_unknown_friction_law_is_refused():
+    with pytest.raises(ValueError, match="friction must be 'spring' or 'viscous', got 'dry'"):
+        rm.engine(friction="dry")
+    with pytest.raises(TypeError, match="friction: expected a string"):
+        rm.engine(friction=1)
 
 
 # A mesh given far from the origin (here 100 m away, 4000 radii) pickles and comes back exactly.

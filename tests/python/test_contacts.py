@@ -30,7 +30,8 @@ def record_states():
 def bodies_in_a_box(steps):
     """Three spheres and a gummy bear dropped on each other into a box of four Walls and a floor, with friction,
     run until bodies press on each other and on the walls. A PyRunner just before the engine records every
-    state, so that a contact can be evaluated again exactly as the step saw it."""
+    state, so that a contact can be evaluated again exactly as the step saw it: under the paper's viscous friction,
+    whose force depends on the state alone (the default spring also remembers the pair's past)."""
     icosphere = rm.Mesh.icosphere(R, 2)
     bear = rm.Mesh.reference_shape("gummy_bear")
     bodies = [rm.add_body(icosphere, pos=(x, 0.004 * x / 0.02, 0.021 + 0.038 * i), material=RUBBER)
@@ -39,7 +40,7 @@ def bodies_in_a_box(steps):
     walls = open_box(0.06, STEEL)
     recorder = PyRunner(command=f"__import__('sys').modules[{__name__!r}].record_states()", iterPeriod=1, initRun=True)
     O.engines = [ForceResetter(), recorder,
-                 rm.engine(), NewtonIntegrator(gravity=GRAVITY, damping=0)]
+                 rm.engine(friction="viscous"), NewtonIntegrator(gravity=GRAVITY, damping=0)]
     O.dt = 0.2 * rm.critical_timestep()
     O.run(steps, True)
     return bodies, walls
@@ -47,10 +48,10 @@ def bodies_in_a_box(steps):
 
 @pytest.fixture(scope="module")
 def packed():
-    """The scene after 1,800 steps (0.25 s): the bear has landed on the spheres, which press on the floor, on
-    the walls and on each other. Returned as (bodies, walls, contacts, forces and torques on every body)."""
+    """The scene after 2,700 steps (0.37 s): the bear has landed on a sphere, and the spheres press on the floor and
+    one on a side wall. Returned as (bodies, walls, contacts, forces and torques on every body)."""
     O.reset()
-    bodies, walls = bodies_in_a_box(1800)
+    bodies, walls = bodies_in_a_box(2700)
     found = rm.contacts()
     wrenches = {b.id: (np.array(O.forces.f(b.id)), np.array(O.forces.t(b.id))) for b in O.bodies}
     states = dict(_states)
@@ -115,14 +116,15 @@ def test_each_pair_is_what_the_same_contact_gives_alone(packed):
         if b in meshes:
             pos2, ori2, vel2, ang2 = states[b]
             f1, t1, f2, t2 = rm.body_contact(meshes[a], pos1, ori1, meshes[b], pos2, ori2, RUBBER, RUBBER, vel1=vel1,
-                                             ang_vel1=ang1, vel2=vel2, ang_vel2=ang2)
+                                             ang_vel1=ang1, vel2=vel2, ang_vel2=ang2, friction="viscous")
         else:
             axis, sense = walls[b]
             point = np.zeros(3)
             point[axis] = states[b][0][axis]
             normal = np.zeros(3)
             normal[axis] = sense
-            f1, t1 = rm.plane_contact(meshes[a], pos1, ori1, point, normal, RUBBER, STEEL, vel=vel1, ang_vel=ang1)
+            f1, t1 = rm.plane_contact(meshes[a], pos1, ori1, point, normal, RUBBER, STEEL, vel=vel1, ang_vel=ang1,
+                                      friction="viscous")
         scale = np.linalg.norm(found["force1"][k])
         # The engine took this pair's triangle pairs from its lists kept between steps, the evaluation alone
         # finds them afresh: the same triangle contacts, summed in another order (round-off of a few ulp per

@@ -28,7 +28,7 @@ def record():
     _totals.append((O.energy.total(), dict(O.energy.items())))
 
 
-def bouncing(damping=0.0, friction=0.0, tangential_damping=0.0, vel=(0, 0, 0), duration=0.12):
+def bouncing(damping=0.0, friction=0.0, tangential_damping=0.0, vel=(0, 0, 0), duration=0.12, law="spring"):
     ball_material = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=damping, friction=friction,
                                      tangential_damping=tangential_damping)
     wall_material = rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=damping, friction=friction,
@@ -37,7 +37,7 @@ def bouncing(damping=0.0, friction=0.0, tangential_damping=0.0, vel=(0, 0, 0), d
     O.bodies[ball].state.vel = vel
     wall = O.bodies.append(utils.wall(0, axis=2, sense=1))
     rm.assign_material(wall, wall_material)
-    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0),
+    O.engines = [ForceResetter(), rm.engine(friction=law), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0),
                  PyRunner(command=f"__import__('sys').modules[{__name__!r}].record()", iterPeriod=1)]
     O.dt = FRACTION * rm.critical_timestep()
     O.trackEnergy = True
@@ -81,13 +81,15 @@ def test_undamped_frictionless_bounce_conserves_the_total():
     assert deviation <= bound
 
 
-def test_damped_bounce_with_friction_balances_the_dissipation():
-    # Thrown sideways at 0.5 m/s onto the wall: normal damping and friction both work. The dissipated energies
-    # are sums of power times dt at the half-step velocities the forces were computed with, which shifts them by
-    # the same (omega dt / 2) relative amount as the kinetic energy: the bound adds FRACTION times what was
-    # dissipated.
-    ball_material, wall_material, rows = bouncing(damping=1e-3, friction=0.3, tangential_damping=50,
-                                                  vel=(0.5, 0, 0))
+# Thrown sideways at 0.5 m/s onto the wall: normal damping and friction both work. The dissipated energies are sums
+# of power times dt at the half-step velocities the forces were computed with, which shifts them by the same
+# (omega dt / 2) relative amount as the kinetic energy: the bound adds FRACTION times what was dissipated. Under the
+# tangential spring (whose stored energy is in rmElastPotential, and rmFrictDissip what the bodies lose beyond it)
+# with c = 5 N s/m, a quarter of the spring's critical damping, and under the paper's viscous law with c = 50 N s/m.
+@pytest.mark.parametrize("law, c", [("spring", 5.0), ("viscous", 50.0)])
+def test_damped_bounce_with_friction_balances_the_dissipation(law, c):
+    ball_material, wall_material, rows = bouncing(damping=1e-3, friction=0.3, tangential_damping=c,
+                                                  vel=(0.5, 0, 0), law=law)
     totals = np.array([t for t, _ in rows])
     final = rows[-1][1]
     dissipated = final["rmNormDamp"] + final["rmFrictDissip"]

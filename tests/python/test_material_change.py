@@ -62,10 +62,12 @@ def test_a_new_density_changes_mass_and_inertia():
 
 # S4's sphere (rotations blocked, so that it can only slide) settles without friction on a Wall, pushed
 # sideways by F_A = mu m g / 2, and slides away faster and faster. Friction turned on for both materials (a
-# pair uses the smaller mu and the mean c) first brakes it at the Coulomb force mu F_n (Eq. 19), then, once
-# c |v_t| no longer exceeds mu F (Eq. 21), holds it at the creep speed F_A / c of the no-slip force -c v_t
-# (Eq. 20, the area fractions summing to 1), where friction carries F_A.
-def test_friction_turned_on_after_settling():
+# pair uses the smaller mu and the mean c) first brakes it at the Coulomb force mu F_n (Eq. 19), then:
+# - with the paper's viscous law, once c |v_t| no longer exceeds mu F (Eq. 21), holds it at the creep speed F_A / c
+#   of the no-slip force -c v_t (Eq. 20, the area fractions summing to 1), where friction carries F_A;
+# - with the default spring, stops it: the spring holds F_A and the sphere stands still.
+@pytest.mark.parametrize("law", ["viscous", "spring"])
+def test_friction_turned_on_after_settling(law):
     ball = rm.add_body(rm.Mesh.icosphere(R, 2), pos=(0, 0, R - 1.4e-4), material=RUBBER)
     O.bodies[ball].state.blockedDOFs = "XYZ"
     wall = O.bodies.append(utils.wall(0, axis=2, sense=1))
@@ -73,7 +75,7 @@ def test_friction_turned_on_after_settling():
     mu, c = 0.5, 100.0
     mass = O.bodies[ball].state.mass
     push = 0.5 * mu * mass * GRAVITY
-    O.engines = [ForceResetter(), rm.engine(),
+    O.engines = [ForceResetter(), rm.engine(friction=law),
                  PyRunner(command=f"O.forces.addF({ball}, ({push!r}, 0, 0))", iterPeriod=1, initRun=True),
                  NewtonIntegrator(gravity=(0, 0, -GRAVITY), damping=0)]
     O.dt = 2e-4
@@ -89,9 +91,16 @@ def test_friction_turned_on_after_settling():
     friction, normal = O.forces.f(wall)[0], -O.forces.f(wall)[2]
     # 1e-6: the normal force itself still settles from the switch (measured 3e-8 after 50 steps)
     assert friction == pytest.approx(mu * normal, rel=1e-6)
-    O.run(750, True)  # 0.15 s more: stopped sliding after 0.1 s, then relaxed to creep with time m / c = 1.3 ms
-    # 1e-9: the relaxation is exponential and long over (measured 5e-15)
-    assert O.bodies[ball].state.vel[0] == pytest.approx(push / c, rel=1e-9)
+    if law == "viscous":
+        O.run(750, True)  # 0.15 s more: stopped sliding after 0.1 s, then relaxed to creep with time m / c = 1.3 ms
+        # 1e-9: the relaxation is exponential and long over (measured 5e-15)
+        assert O.bodies[ball].state.vel[0] == pytest.approx(push / c, rel=1e-9)
+    else:
+        # Stopped sliding after 0.1 s with the spring at the cap mu F_n, twice the push: the spring gives back the
+        # difference, the sphere moving back (0.1 mm) with the overdamped relaxation time c / k_t = 36 ms, k_t the
+        # spring's stiffness at this overlap. 1 s more: 28 relaxation times.
+        O.run(5250, True)
+        assert abs(O.bodies[ball].state.vel[0]) < 1e-9 * push / c
     assert O.forces.f(wall)[0] == pytest.approx(push, rel=1e-9)
 
 
