@@ -38,6 +38,7 @@ import numpy as np  # noqa: E402
 
 from roundedmesh import validation as v  # noqa: E402
 from roundedmesh.analytic import nrmse  # noqa: E402
+from roundedmesh.export import write_csv  # noqa: E402
 
 SPHERE_NODES = {42: 1, 162: 2, 642: 3, 2562: 4}
 SPHERE_POSES = 6
@@ -46,13 +47,6 @@ SPHEROID_CHECK_NODES = 642          # every ratio, to show mesh convergence
 SPHEROID_FINE = (2.0, 10242)        # one ratio at a finer mesh
 AXIS_POSES = 3
 CYLINDER_NODES = (642, 2562, 10242)
-
-
-def _write_csv(path, header, rows):
-    with open(path, "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(header)
-        writer.writerows(rows)
 
 
 def _log(message):
@@ -76,10 +70,10 @@ def figure_3(output):
     for (partner, n), sweep in sweeps.items():
         columns += [sweep.forces[0], sweep.forces[1]]
         header += [f"{partner}{n}_frame", f"{partner}{n}_random1"]
-    _write_csv(os.path.join(output, "body_contact_fig3_force.csv"), header, np.column_stack(columns))
+    write_csv(os.path.join(output, "body_contact_fig3_force.csv"), header, np.column_stack(columns))
     rows = [[partner, n, pose, sweep.errors[pose]] for (partner, n), sweep in sweeps.items()
             for pose in range(len(sweep.errors))]
-    _write_csv(os.path.join(output, "body_contact_fig3_nrmse.csv"),
+    write_csv(os.path.join(output, "body_contact_fig3_nrmse.csv"),
                ["partner", "nodes", "pose (0 = icosphere frames)", "nrmse"], rows)
 
     figure, axes = plt.subplots(1, 3, figsize=(17, 4.5))
@@ -135,7 +129,7 @@ def figure_7(output):
         for pose, force in enumerate(s.forces):
             rows += [[ratio, s.nodes, pose, d, f, e, c, h, int(i)]
                      for d, f, e, c, h, i in zip(s.overlaps, force, s.reference, s.circular, s.approximate, s.in_range)]
-    _write_csv(os.path.join(output, "body_contact_fig7_force.csv"),
+    write_csv(os.path.join(output, "body_contact_fig7_force.csv"),
                ["ratio", "nodes", "pose", "overlap", "force", "exact_elliptical_hertz", "circular_hertz_mean_curvature",
                 "approximate_elliptical_hertz", "within_search_limit"], rows)
 
@@ -149,7 +143,7 @@ def figure_7(output):
                       s.worst, s.mean, s.errors_in_range.max(), s.errors_in_range.mean(),
                       float(np.mean(s.forces[:, last]) / s.reference[last]), s.circular_errors.max(), s.model_error,
                       nrmse(s.approximate, s.reference), bool(s.increasing().all())])
-    _write_csv(os.path.join(output, "body_contact_fig7_nrmse.csv"), header, table)
+    write_csv(os.path.join(output, "body_contact_fig7_nrmse.csv"), header, table)
 
     figure, (left, right) = plt.subplots(1, 2, figsize=(13, 4.5))
     ratios = np.array(v.S5_RATIOS)
@@ -213,7 +207,7 @@ def figure_8(output):
         for pose, force in enumerate(s.forces):
             columns.append(force)
             header.append(f"{arrangement}{s.nodes}_pose{pose}")
-    _write_csv(os.path.join(output, "body_contact_fig8_force.csv"), header, np.column_stack(columns))
+    write_csv(os.path.join(output, "body_contact_fig8_force.csv"), header, np.column_stack(columns))
 
     table = []
     for (arrangement, nodes), s in sweeps.items():
@@ -222,7 +216,7 @@ def figure_8(output):
         table.append([arrangement, s.nodes, s.worst, s.mean, float(np.mean(s.forces[:, -1]) / s.reference[-1]),
                       float(np.mean(stiffness)), float(np.min(stiffness)), float(np.max(stiffness)),
                       float(np.mean(exponents)), bool(s.increasing().all())])
-    _write_csv(os.path.join(output, "body_contact_fig8_summary.csv"),
+    write_csv(os.path.join(output, "body_contact_fig8_summary.csv"),
                ["arrangement", "nodes", "nrmse_worst", "nrmse_mean", "force_over_reference_at_max",
                 "stiffness_error_mean", "stiffness_error_min", "stiffness_error_max", "power_law_exponent_mean",
                 "increasing_all_poses"], table)

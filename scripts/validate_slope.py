@@ -13,12 +13,11 @@ Parts (each writes its CSV, prints its table):
     damping   the gummy bear pressed 0.5 mm into a plane in 12 random poses and moved along it: the no-slip force
               over c v (slope_damping.csv)
     timestep  rm.critical_timestep() of the bear on the floor against c, per law (slope_timestep.csv)
-Run with a build from before the spring (PYTHONPATH=<old build>/python), it measures the paper's law as it was
-(the engine without the friction option): the "before" columns of doc/validation.md. About 8 minutes on two cores.
+About 8 minutes on two cores. The "before" columns of doc/validation.md (the paper's law as it was, before the
+spring) came from this script as of commit 44593e1, which also ran on a build without the friction option (main at
+93c580d).
 """
 import argparse
-import csv
-import inspect
 import math
 import os
 import sys
@@ -32,20 +31,13 @@ import numpy as np  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 from roundedmesh import scenes  # noqa: E402
-from yade import ForceResetter, NewtonIntegrator, O, utils  # noqa: E402
+from roundedmesh.export import write_csv  # noqa: E402
+from yade import O  # noqa: E402
 from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 
-HAS_LAWS = "law" in inspect.signature(getattr(scenes, "build_slope", lambda: None)).parameters
-LAWS = ["spring", "viscous"] if HAS_LAWS else ["before"]
+LAWS = ["spring", "viscous"]
 SHAPES = ("gummy_bear", "pear")
 G = 9.81
-
-
-def _write_csv(path, header, rows):
-    with open(path, "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(header)
-        writer.writerows(rows)
 
 
 def _log(message):
@@ -53,32 +45,7 @@ def _log(message):
 
 
 def build(shape, angle, law, blocked=None, **changes):
-    """The slope scene; with an old build (no scenes.build_slope), the same scene written out here."""
-    if HAS_LAWS:
-        return scenes.build_slope(shape, angle, law=law, blocked=blocked, **changes)
-    O.reset()
-    scene = SlopeScene()
-    poses = {"gummy_bear": (Quaternion.Identity, ""), "pear": (Quaternion((0, 0, 1), math.pi), "X")}
-    values = dict(poisson=0.4, density=2000, damping=1e-2, friction=0.5, tangential_damping=100.0)
-    particle = rm.HertzMaterial(**{**values, "young": 1e6, **changes})
-    floor_material = rm.HertzMaterial(**{**values, "young": 5e6, **changes})
-    ori, pose_blocked = poses[shape]
-    mesh = rm.Mesh.reference_shape(shape)
-    lowest = min((ori * Vector3(*x))[2] for x in mesh.vertices)
-    body = rm.add_body(mesh, pos=(0, 0, scene.gap - lowest), ori=ori, material=particle)
-    O.bodies[body].state.blockedDOFs = pose_blocked if blocked is None else blocked
-    rm.assign_material(O.bodies.append(utils.wall(0, axis=2, sense=1)), floor_material)
-    a = math.radians(angle)
-    O.engines = [ForceResetter(), rm.engine(),
-                 NewtonIntegrator(gravity=(G * math.sin(a), 0, -G * math.cos(a)), damping=0)]
-    # The old limit knew nothing of c: c dt / m_t must stay below 2 (m_t about m / 8 for the bear) for the viscous
-    # force to be stable, which 0.1 of it (2.2e-4 s) keeps, 0.5 does not.
-    O.dt = 0.1 * rm.critical_timestep()
-    return body
-
-
-class SlopeScene:  # the values of scenes.SlopeScene, for an old build
-    gap = 1e-4
+    return scenes.build_slope(shape, angle, law=law, blocked=blocked, **changes)
 
 
 def trace(body, duration, samples):
@@ -109,7 +76,7 @@ def drift(output, duration):
             lines.append(f"{shape:10s}  {law:8s}  {O.dt:.3g}  {1e6 * d[-1][0]:20.6g}  {1e6 * d[-1][0] / duration:17.6g}"
                          f"  {1e6 * total:12.6g}  {sliding}")
             _log(f"drift: {shape} {law}: {time.monotonic() - start:.1f} s")
-    _write_csv(os.path.join(output, "slope_drift.csv"),
+    write_csv(os.path.join(output, "slope_drift.csv"),
                ["shape", "law", "dt_s", "duration_s", "along_slope_m", "per_second_m_s", "total_m", "sliding_contacts"],
                rows)
     figure, axes = plt.subplots(1, len(SHAPES), figsize=(12, 4.5))
@@ -145,7 +112,7 @@ def slide(output):
                 lines.append(f"{shape:10s}  {law:8s}  {angle:5.1f}  {a:9.4f}  {coulomb:7.4f}  "
                              f"{100 * (a / coulomb - 1):8.3f}")
             _log(f"slide: {shape} {law} done")
-    _write_csv(os.path.join(output, "slope_slide.csv"), ["shape", "law", "angle_deg", "acceleration", "coulomb"], rows)
+    write_csv(os.path.join(output, "slope_slide.csv"), ["shape", "law", "angle_deg", "acceleration", "coulomb"], rows)
     figure, axis = plt.subplots(figsize=(6, 4.5))
     x = np.linspace(26.57, 46, 50)
     axis.plot(x, G * (np.sin(np.radians(x)) - 0.5 * np.cos(np.radians(x))), "k-", label="Coulomb, mu = 0.5")
@@ -173,12 +140,11 @@ def damping(output):
         v = Vector3(*rng.normal(size=2), 0).normalized() * 1e-5
         row = [pose]
         for law in LAWS:
-            extra = {"friction": law} if HAS_LAWS else {}
             force, _ = rm.plane_contact(bear, (0, 0, -5e-4 - lowest), ori, (0, 0, 0), (0, 0, 1), material, floor,
-                                        vel=v, **extra)
+                                        vel=v, friction=law)
             row.append(-Vector3(force[0], force[1], 0).dot(v) / (100.0 * v.squaredNorm()))
         rows.append(row)
-    _write_csv(os.path.join(output, "slope_damping.csv"), ["pose"] + [f"{law}_over_c" for law in LAWS], rows)
+    write_csv(os.path.join(output, "slope_damping.csv"), ["pose"] + [f"{law}_over_c" for law in LAWS], rows)
     lines = ["No-slip force of the gummy bear over c v, 12 random poses (0.5 mm deep, v = 10 um/s along the plane)"]
     for k, law in enumerate(LAWS):
         values = np.array([r[k + 1] for r in rows])
@@ -196,7 +162,7 @@ def timestep(output):
             row.append(rm.critical_timestep())
         rows.append(row)
         lines.append(f"{c:9g}  " + "  ".join(f"{v:10.3g}" for v in row[1:]))
-    _write_csv(os.path.join(output, "slope_timestep.csv"), ["c"] + [f"{law}_s" for law in LAWS], rows)
+    write_csv(os.path.join(output, "slope_timestep.csv"), ["c"] + [f"{law}_s" for law in LAWS], rows)
     return lines
 
 

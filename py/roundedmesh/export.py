@@ -9,6 +9,7 @@
                              scale by "radius", factor 2) draws them
     write_mesh_vtp(mesh, path)  one Mesh in its own (principal) frame; cell data: radius, curvature;
                              point data: node curvature computed from the mesh (Eq. 1)
+    write_csv(path, header, rows)  a table of results, one header row then the rows (the CSV beside each plot)
     VtkSeries(directory, spheres=False)  numbered .vtp files plus a .pvd collection indexed by simulated
                              time; call .write() when a frame is wanted, e.g. from a PyRunner (it turns
                              keep_triangle_forces() on, so frames have the contact forces). With
@@ -22,6 +23,7 @@ and a frame is a quarter of the same arrays as decimal text: 6.7 MB for the 250 
 (doc/scenes.md) against 27.7 MB. ParaView and VTK read the files as their own.
 """
 import base64
+import csv
 import os
 import xml.etree.ElementTree as ElementTree
 import zlib
@@ -37,6 +39,14 @@ from .scene import rounded_bodies
 # a frame of S1 6.7 MB instead of 8.1 MB. VTK's reader takes any block size the header gives.
 _BLOCK = 1 << 20
 _TYPES = {np.dtype("<f8"): "Float64", np.dtype("<i8"): "Int64"}
+
+
+def write_csv(path, header, rows):
+    """Writes `header` then `rows` (sequences of values) to the CSV file `path`."""
+    with open(path, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(header)
+        writer.writerows(rows)
 
 
 def _surfaces():
