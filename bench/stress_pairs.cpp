@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
   std::printf("  worst jump at a switch %.4g (bound %.3g, of the whole-circle force), %ld over\n", worstJump,
               kSwitchJump, jumpViolations);
 
-  const std::vector<RoundedBody> bodies = unitBodies(HertzMaterial{1e6, 0.4, 2000, 1e-3, 0.5, 20});
+  BodyLibrary bodies(HertzMaterial{1e6, 0.4, 2000, 1e-3, 0.5, 20});
   const long bodyPairs = pairs / 10;
   long touching = 0, triangleContacts = 0, bodySwitches = 0, bodyNonFinite = 0, bodySlopeViolations = 0,
        bodyJumpViolations = 0;

@@ -40,7 +40,7 @@ TEST(ContactRobustness, RandomTrianglePairsGiveFiniteContinuousForces) {
 // triangle pairs, for a step of 1e-7 of the radius (slope) and at the switches of a move of 1e-4 (jump).
 TEST(ContactRobustness, RandomBodyPairsGiveFiniteContinuousForces) {
   RandomSource random(12);
-  const std::vector<RoundedBody> bodies = unitBodies(HertzMaterial{1e6, 0.4, 2000, 1e-3, 0.5, 20});
+  BodyLibrary bodies(HertzMaterial{1e6, 0.4, 2000, 1e-3, 0.5, 20});
   int touching = 0, switches = 0;
   Real worstSlope = 0, worstJump = 0;
   for (int trial = 0; trial < 200; ++trial) {

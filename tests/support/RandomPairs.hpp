@@ -237,42 +237,66 @@ PairCheck checkTrianglePair(const TrianglePair& pair, const HertzPhys& phys, Sou
 // The bodies of the body pairs, about 1 in size (radius or semi-axes), as the engine holds them: icospheres of
 // 162 and 642 nodes (exact curvature), a distorted icosphere (D = 0.5, curvature from the mesh: uneven radii,
 // some flat) and a spheroid of aspect 2 (about 500 nodes, curvature from the mesh).
-inline std::vector<RoundedBody> unitBodies(const HertzMaterial& material) {
-  std::vector<RoundedBody> bodies;
-  bodies.push_back(roundedBody(0, BodyMesh(icosphere(1, 2)), material));
-  bodies.push_back(roundedBody(0, BodyMesh(icosphere(1, 3)), material));
-  bodies.push_back(roundedBody(0, BodyMesh(distortedIcosphereSurface(1, 3, 0.5, 5), std::nullopt), material));
-  bodies.push_back(roundedBody(0, BodyMesh(spheroidSurface(1, 0.5, 500), std::nullopt), material));
-  return bodies;
-}
+// The bodies of the random body pairs: an icosphere of 162 and one of 642 nodes (exact curvature), a distorted
+// icosphere (D = 0.5) and a spheroid of aspect 2 (curvature from the mesh), each of unit size, scaled by one of
+// kScales sizes log-spaced from 1e-3 to 1 (half a decade apart). A scaled mesh is made on first use and shared by
+// every pair that draws it, as a scene shares one mesh among its bodies: a mesh builds its distance field
+// (SolidDistance.hpp) once, which a new mesh per pair would build every time (0.1 to 0.5 s each).
+class BodyLibrary {
+ public:
+  static constexpr int kScales = 7;
 
-// The mesh with every length, radii included, times `scale`.
-inline RoundedMesh scaled(const RoundedMesh& mesh, Real scale) {
-  std::vector<Vector3r> vertices = mesh.vertices();
-  for (Vector3r& v : vertices) v *= scale;
-  std::vector<Real> radii = mesh.radii();
-  for (Real& r : radii) r *= scale;
-  return RoundedMesh(std::move(vertices), mesh.triangles(), radii);
-}
+  explicit BodyLibrary(const HertzMaterial& material) {
+    unit_.push_back(roundedBody(0, BodyMesh(icosphere(1, 2)), material));
+    unit_.push_back(roundedBody(0, BodyMesh(icosphere(1, 3)), material));
+    unit_.push_back(roundedBody(0, BodyMesh(distortedIcosphereSurface(1, 3, 0.5, 5), std::nullopt), material));
+    unit_.push_back(roundedBody(0, BodyMesh(spheroidSurface(1, 0.5, 500), std::nullopt), material));
+    scaled_.resize(unit_.size() * kScales);
+  }
+
+  int kinds() const { return static_cast<int>(unit_.size()); }
+  static Real scale(int level) { return std::pow(10.0, -3.0 + 3.0 * level / (kScales - 1)); }
+
+  // Body `kind` scaled by scale(level), every length and radius included.
+  RoundedBody body(int kind, int level) {
+    RoundedBody body = unit_[kind];
+    std::shared_ptr<const RoundedMesh>& mesh = scaled_[kind * kScales + level];
+    if (!mesh) mesh = std::make_shared<const RoundedMesh>(scaledMesh(*body.mesh, scale(level)));
+    body.mesh = mesh;
+    body.equivalentRadius *= scale(level);
+    return body;
+  }
+
+ private:
+  static RoundedMesh scaledMesh(const RoundedMesh& mesh, Real scale) {
+    std::vector<Vector3r> vertices = mesh.vertices();
+    for (Vector3r& v : vertices) v *= scale;
+    std::vector<Real> radii = mesh.radii();
+    for (Real& r : radii) r *= scale;
+    return RoundedMesh(std::move(vertices), mesh.triangles(), radii);
+  }
+
+  std::vector<RoundedBody> unit_;
+  std::vector<std::shared_ptr<const RoundedMesh>> scaled_;
+};
 
 struct BodyPairCase {
   ContactModel model;
   ContactData data;
 };
 
-// Two of the unit bodies scaled by a size from 1e-3 to 1, in random orientations, body 2 along a random
-// direction from body 1 at the distance where their vertex hulls touch, less an overlap log-uniform from
-// 1e-7 (grazing) to kDeepestOverlap (deep) of the size; each moving at up to 1 m/s and 10 rad/s.
+// Two bodies of the library at one of its sizes, in random orientations, body 2 along a random direction from
+// body 1 at the distance where their vertex hulls touch, less an overlap log-uniform from 1e-7 (grazing) to
+// kDeepestOverlap (deep) of the size; each moving at up to 1 m/s and 10 rad/s.
 template <class Source>
-BodyPairCase randomBodyPair(Source& random, const std::vector<RoundedBody>& unitBodies) {
-  const Real scale = std::exp(random.uniform(std::log(1e-3), 0));
+BodyPairCase randomBodyPair(Source& random, BodyLibrary& library) {
+  auto draw = [&](int count) { return std::min(count - 1, static_cast<int>(random.uniform(0, count))); };
+  const int level = draw(BodyLibrary::kScales);
+  const Real scale = BodyLibrary::scale(level);
   BodyPairCase c;
   for (int b = 0; b < 2; ++b) {
-    const size_t pick = std::min<size_t>(unitBodies.size() - 1, size_t(random.uniform(0, unitBodies.size())));
-    RoundedBody body = unitBodies[pick];
+    RoundedBody body = library.body(draw(library.kinds()), level);
     body.id = b;
-    body.mesh = std::make_shared<const RoundedMesh>(scaled(*body.mesh, scale));
-    body.equivalentRadius *= scale;
     c.model.bodies.push_back(body);
   }
   c.data.resize(c.model);
