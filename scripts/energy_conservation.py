@@ -34,8 +34,8 @@ collisions  The two bodies in a YADE scene (ForceResetter, rm.engine(), NewtonIn
             energy in free flight before the contact (the integrator's own share).
                 energy_collisions.csv, energy_collisions.png
 Each part prints a markdown table (worst and median per case). --quick: one loop per case with a quarter of the
-segments, one seed of collisions (a check that the script runs). The full tables in doc/validation.md took 18 min
-(loops) and 14 min (collisions), run side by side with --only on a busy two-core machine.
+segments, one seed of collisions (a check that the script runs, about 4 min). The full tables in doc/validation.md
+took 18 min (loops) and 14 min (collisions), run side by side with --only on a busy two-core machine.
 """
 import argparse
 import csv
