@@ -300,7 +300,8 @@ def run_loops(output, quick):
         for overlap, marker in zip(OVERLAPS, "os"):
             values = [abs(r["work_over_energy"]) * 100 for r in rows if r["case"] == case and r["overlap_mm"] ==
                       overlap * 1e3]
-            left.semilogy(np.full(len(values), i + (0.15 if overlap == OVERLAPS[1] else -0.15)), values, marker,
+            offset = 0.3 * (OVERLAPS.index(overlap) - (len(OVERLAPS) - 1) / 2)
+            left.semilogy(np.full(len(values), i + offset), values, marker,
                           color=f"C{OVERLAPS.index(overlap)}",
                           label=f"{overlap * 1e3:.1f} mm overlap" if i == 0 else None)
         worst = max((r for r in rows if r["case"] == case), key=lambda r: abs(r["work_over_peak_energy"]))
