@@ -4,7 +4,8 @@ and plain spheres of the volume-equivalent radius, each with YADE's Hertz-Mindli
 figures our engine's speed is stated against.
 
     /usr/bin/python3 scripts/bench_s1_peers.py [--poses bench/data/s1_settled.csv]
-        [--peers clumps spheres [levelset]] [--count 40] [--spacing 1e-3] [--surface-nodes 511]
+        [--peers roundedmesh clumps spheres [levelset]] [--nodes N] [--regime auto] [--count 40]
+        [--spacing 1e-3] [--surface-nodes 511]
         [--level-set-verlet 0] [--warmup 100] [--blocks 5] [--block-steps 200] [--min-block-seconds 2]
         [--output out/bench_s1_peers/peers.csv]
 
@@ -177,6 +178,10 @@ def main(argv):
     parser.add_argument("--shape", default="gummy_bear")
     parser.add_argument("--peers", nargs="+", default=["roundedmesh", "clumps", "spheres"],
                         choices=["roundedmesh", "clumps", "levelset", "spheres"])
+    parser.add_argument("--nodes", type=int, default=None,
+                        help="nodes of the roundedmesh meshes (Mesh.reference_shape; default its own)")
+    parser.add_argument("--regime", default="auto", choices=("auto", "quadrature", "direct"),
+                        help="roundedmesh's pressure integration (roundedmesh.engine)")
     parser.add_argument("--count", type=int, default=40, help="spheres per clump")
     parser.add_argument("--spacing", type=float, default=1e-3, help="level-set grid spacing [m]")
     parser.add_argument("--surface-nodes", type=int, default=511, help="level-set boundary nodes asked for")
@@ -204,7 +209,9 @@ def main(argv):
           f"damping ratio at {betan['bear-bear overlap'] * 1e3:.3f} / {betan['bear-wall overlap'] * 1e3:.3f} mm)")
     level_set_options = {} if args.level_set_verlet is None else {"verlet_distance": args.level_set_verlet}
     builders = {
-        "roundedmesh": (f"roundedmesh, {args.shape} meshes", lambda: peers.build_rounded(poses, args.shape)),
+        "roundedmesh": (f"roundedmesh, {args.shape} meshes of {args.nodes or 'the default'} nodes, "
+                        f"regime {args.regime}",
+                        lambda: peers.build_rounded(poses, args.shape, args.nodes, regime=args.regime)),
         "clumps": (f"clumps of {args.count} spheres", lambda: peers.build_clumps(poses, args.count, args.shape)),
         "levelset": (f"level sets ({args.surface_nodes} rays, grid {args.spacing * 1e3:g} mm)",
                      lambda: peers.build_level_sets(poses, args.shape, args.spacing, args.surface_nodes,

@@ -248,12 +248,12 @@ def build_spheres(poses):
     return ids
 
 
-def build_rounded(poses, name="gummy_bear"):
-    """S1 with one rounded body of Mesh.reference_shape(name) per pose (resets O), with S1's HertzMaterials
-    (Eq. 7 damping A on both) and the roundedmesh engine: the representation the others are compared with.
-    Returns the bodies' ids."""
+def build_rounded(poses, name="gummy_bear", nodes=None, **engine_options):
+    """S1 with one rounded body of Mesh.reference_shape(name, nodes) per pose (resets O), with S1's HertzMaterials
+    (Eq. 7 damping A on both) and the roundedmesh engine (roundedmesh.engine's options, e.g. regime): the
+    representation the others are compared with. Returns the bodies' ids."""
     O.reset()
-    mesh = shapes.reference_shape(name)
+    mesh = shapes.reference_shape(name, nodes)
     particle = HertzMaterial(damping=DAMPING_CONSTANT, **PARTICLE)
     ids = []
     for pose in poses:
@@ -265,7 +265,7 @@ def build_rounded(poses, name="gummy_bear"):
                  utils.wall(HALF_BASE, axis=0, sense=-1), utils.wall(-HALF_BASE, axis=1, sense=1),
                  utils.wall(HALF_BASE, axis=1, sense=-1)):
         scene.assign_material(O.bodies.append(wall), HertzMaterial(damping=DAMPING_CONSTANT, **BOX))
-    O.engines = [ForceResetter(), scene.engine(), NewtonIntegrator(damping=0, gravity=(0, 0, -GRAVITY))]
+    O.engines = [ForceResetter(), scene.engine(**engine_options), NewtonIntegrator(damping=0, gravity=(0, 0, -GRAVITY))]
     O.dt = TIME_STEP
     return ids
 

@@ -762,12 +762,14 @@ def _equivalent_radius(volume):
 
 def _warn_deep_overlaps(state):
     """Warns, after the first step of a scene's engine (and after every change of its bodies or partners), of the
-    pairs that overlap by more than DEEP_OVERLAP of the smaller body's volume-equivalent radius."""
+    pairs that overlap by more than DEEP_OVERLAP of the smaller body's volume-equivalent radius: by their depth
+    (contacts()['depth']), what the stop rule compares. The deepest triangle contact can run through two bodies at a
+    slant: in a settled packing of S1 it reached 0.34 r_eq where no pair was deeper than 0.09 r_eq."""
     found = contacts()
     radius = {i: _equivalent_radius(mesh.volume) for i, mesh in rounded_bodies().items()}
     radius.update(sphere_bodies())
     deep = []
-    for id1, id2, overlap in zip(found["id1"], found["id2"], found["overlap"]):
+    for id1, id2, overlap in zip(found["id1"], found["id2"], found["depth"]):
         fraction = overlap / min(radius[int(i)] for i in (id1, id2) if int(i) in radius)
         if fraction > DEEP_OVERLAP:
             deep.append((fraction, int(id1), int(id2), overlap))
