@@ -31,6 +31,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.spatial.transform import Rotation
 from yade import (FrictMat, ForceResetter, InsertionSortCollider, InteractionLoop, NewtonIntegrator, O, utils)
 from yade import (Bo1_LevelSet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, Ig2_LevelSet_LevelSet_ScGeom,
                   Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_LevelSet_ScGeom, Ig2_Wall_Sphere_ScGeom,
@@ -93,6 +94,16 @@ class SmoothShape:
             return np.linalg.norm(points, axis=1) - RADIUS
         return peers.shape_distance(self.name, points, self.nodes)
 
+    def to_common(self):
+        """(3, 3) rotation taking vectors of this body frame to the body frame of Mesh.reference_shape(name) (the
+        paper's node count), in which the poses are given: R_common^T R_nodes (rotation), so that one pose turns
+        every representation's smooth shape alike. The identity for the sphere."""
+        if self.name == "sphere":
+            return np.eye(3)
+        own = peers._frame(self.name, self.nodes)[2]
+        turn = own if self.rotation is None else own @ np.asarray(self.rotation)
+        return peers._frame(self.name)[2].T @ turn
+
     def samples(self):
         """Points on f = 0 [m], body frame, about 2 mm apart: the nodes of a 2562-node icosphere, or of the
         2200-node mesh of the shape mapped to this frame through shape units."""
@@ -131,7 +142,8 @@ class PressGeometry:
     for the points and tensors, which are in each body's frame.
         shape                  the SmoothShape
         partner                'plane' or 'self'
-        upper, lower           orientations (Quaternion) of the pressed body and of the copy (None on a plane)
+        upper, lower           orientations (Quaternion) of the pressed body's frame and of the copy's (None on
+                               a plane)
         upper_point, lower_point   support points in the body frames [m]
         touch_upper, touch_lower   positions [m] at which the bodies touch (delta = 0); the lower one is 0
         r_major, r_minor       relative principal radii of the smooth shapes [m] (inf, when 'flat')
@@ -159,11 +171,22 @@ class PressGeometry:
         return hr.reference_force(modulus(self.partner), self.r_major, self.r_minor, deltas)
 
 
+def _quaternion(rotation):
+    """The minieigen Quaternion of a rotation matrix (3, 3)."""
+    x, y, z, w = Rotation.from_matrix(rotation).as_quat()
+    q = Quaternion(w, x, y, z)
+    q.normalize()
+    return q
+
+
 def press_geometry(shape, upper, lower=None):
-    """PressGeometry of `shape` turned by `upper` (Quaternion) pressed on the plane z = 0 (lower None) or on a
-    copy turned by `lower` at the origin."""
+    """PressGeometry of `shape` pressed on the plane z = 0 (lower None) or on a copy at the origin; `upper` and
+    `lower` (Quaternion) turn the body frame of Mesh.reference_shape(name) (SmoothShape.to_common), so that the
+    geometry's orientations, which turn the shape's own frame, put every representation's smooth shape alike."""
     samples = shape.samples()
-    r_up = rotation_matrix(upper)
+    to_common = shape.to_common()
+    r_up = rotation_matrix(upper) @ to_common
+    upper = _quaternion(r_up)
     up_point = hr.support_point(shape.distance, r_up.T @ -_Z, samples)
     up_tensor = hr.curvature_tensor(shape.distance, up_point)[1]
     bodies = [(shape.distance, up_point, up_tensor, r_up)]
@@ -177,7 +200,8 @@ def press_geometry(shape, upper, lower=None):
         contact_global = r_up @ up_point + geometry.touch_upper
         tensors = [r_up @ up_tensor @ r_up.T]
     else:
-        r_low = rotation_matrix(lower)
+        r_low = rotation_matrix(lower) @ to_common
+        geometry.lower = _quaternion(r_low)
         low_point = hr.support_point(shape.distance, r_low.T @ _Z, samples)
         low_tensor = hr.curvature_tensor(shape.distance, low_point)[1]
         bodies.insert(0, (shape.distance, low_point, low_tensor, r_low))
