@@ -20,6 +20,7 @@ then from every part present:
     errors.csv     shape, family, configuration, size, partner, poses used, poses left out (by reason),
                    NRMSE median and worst [%], force-direction angle median and worst [deg]
     errors.md      the same as a markdown table
+    errors_side_by_side.md   one row per configuration, plane and copy side by side (doc/speed-vs-error.md)
 so that the families can be run one at a time (each well under 10 minutes on two busy cores with --poses 30).
 --quick: 3 poses, two configurations per family, every shape (under a minute).
 """
@@ -133,7 +134,32 @@ def summarize(output):
         f.write("| " + " | ".join(summary[0]) + " |\n|" + "---|" * len(summary[0]) + "\n")
         for row in summary:
             f.write("| " + " | ".join(str(v) for v in row.values()) + " |\n")
+    write_side_by_side(summary, os.path.join(output, "errors_side_by_side.md"))
     return summary
+
+
+def write_side_by_side(summary, path):
+    """The table of doc/speed-vs-error.md: one row per configuration, plane and copy side by side."""
+    rows = collections.OrderedDict()
+    for r in summary:
+        key = (r["shape"], r["family"], r["configuration"], r["nodes or spheres"])
+        rows.setdefault(key, {})[r["partner"]] = r
+    header = ["shape", "representation", "nodes or spheres", "plane: poses (left out)", "plane: NRMSE median / worst [%]",
+              "copy: poses (left out)", "copy: NRMSE median / worst [%]", "copy: angle median / worst [deg]"]
+    with open(path, "w") as f:
+        f.write("| " + " | ".join(header) + " |\n|" + "---|" * len(header) + "\n")
+        for (shape, family, configuration, size), partners in rows.items():
+            cells = [shape, f"{family}: {configuration}", str(size)]
+            for partner in ("plane", "self"):
+                r = partners.get(partner)
+                if r is None:
+                    cells += ["", ""] + ([""] if partner == "self" else [])
+                    continue
+                cells += [f"{r['poses used']} ({r['poses left out']})",
+                          f"{r['NRMSE median [%]']} / {r['NRMSE worst [%]']}"]
+                if partner == "self":
+                    cells.append(f"{r['angle median [deg]']} / {r['angle worst [deg]']}")
+            f.write("| " + " | ".join(cells) + " |\n")
 
 
 def main(argv=None):
