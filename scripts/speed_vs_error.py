@@ -17,8 +17,9 @@ paper's mesh: concave, flat, crease, second contact).
 
 Writes, for each shape and family run, parts/<shape>_<family>.csv (one row per configuration, partner and pose),
 then from every part present:
-    errors.csv     shape, family, configuration, size, partner, poses used, poses left out (by reason),
-                   NRMSE median and worst [%], force-direction angle median and worst [deg]
+    errors.csv     shape, family, configuration, size, partner, poses used, poses left out (by reason), poses
+                   with no force at the deepest overlap, NRMSE median and worst [%], force-direction angle
+                   median and worst [deg]
     errors.md      the same as a markdown table
     errors_side_by_side.md   one row per configuration, plane and copy side by side (doc/speed-vs-error.md)
 so that the families can be run one at a time (each well under 10 minutes on two busy cores with --poses 30).
@@ -120,6 +121,7 @@ def summarize(output):
             "shape": key[0], "family": key[1], "configuration": key[2], "nodes or spheres": key[3],
             "partner": key[4], "poses used": len(used), "poses left out": sum(reasons.values()),
             "left out (concave/flat/crease/second contact)": "/".join(str(reasons[r]) for r in REASONS),
+            "no force at 2 % r": int(np.sum(angles == 90.0)),
             "NRMSE median [%]": f"{np.median(errors):.3g}" if len(used) else "",
             "NRMSE worst [%]": f"{errors.max():.3g}" if len(used) else "",
             "angle median [deg]": f"{np.median(angles):.2g}" if len(used) else "",
@@ -144,8 +146,9 @@ def write_side_by_side(summary, path):
     for r in summary:
         key = (r["shape"], r["family"], r["configuration"], r["nodes or spheres"])
         rows.setdefault(key, {})[r["partner"]] = r
-    header = ["shape", "representation", "nodes or spheres", "plane: poses (left out)", "plane: NRMSE median / worst [%]",
-              "copy: poses (left out)", "copy: NRMSE median / worst [%]", "copy: angle median / worst [deg]"]
+    header = ["shape", "representation", "nodes or spheres", "plane: poses (left out) [no force]",
+              "plane: NRMSE median / worst [%]", "copy: poses (left out) [no force]", "copy: NRMSE median / worst [%]",
+              "copy: angle median / worst [deg]"]
     with open(path, "w") as f:
         f.write("| " + " | ".join(header) + " |\n|" + "---|" * len(header) + "\n")
         for (shape, family, configuration, size), partners in rows.items():
@@ -155,7 +158,7 @@ def write_side_by_side(summary, path):
                 if r is None:
                     cells += ["", ""] + ([""] if partner == "self" else [])
                     continue
-                cells += [f"{r['poses used']} ({r['poses left out']})",
+                cells += [f"{r['poses used']} ({r['poses left out']}) [{r['no force at 2 % r']}]",
                           f"{r['NRMSE median [%]']} / {r['NRMSE worst [%]']}"]
                 if partner == "self":
                     cells.append(f"{r['angle median [deg]']} / {r['angle worst [deg]']}")

@@ -17,15 +17,15 @@ peers.shape_distance for the pear and the gummy bear of shapes.json, |x| - r for
 
 Curvature (a). For a surface f = 0 with outward normal n = grad f / |grad f| the shape operator (Weingarten map)
 is K = P H P / |grad f|, with H the Hessian of f and P = I - n n^T the projection on the tangent plane (e.g.
-Goldman, "Curvature formulas for implicit curves and surfaces", CAGD 22 (2005) 632-658, Section 4.1). Its two
-non-zero eigenvalues are the principal curvatures, positive where the surface is convex (the sphere |x| - r
+Goldman, "Curvature formulas for implicit curves and surfaces", Comput. Aided Geom. Des. 22 (2005) 632-658).
+Its two non-zero eigenvalues are the principal curvatures, positive where the surface is convex (the sphere |x| - r
 gives 1/r twice). The gradient and Hessian are central differences with step FD_STEP.
 
 Contact law (b): two bodies touching at a point where their outward normals are opposite have, in the common
 tangent plane, the gap h = x^T (K1 + K2) x / 2 (each K in the tangent plane, in the same axes). Its eigenvalues
 1/r_major <= 1/r_minor are the relative curvatures (Johnson, Contact Mechanics, Cambridge University Press
-1985, Section 4.2, Eqs. 4.2-4.3, where A = 1/(2 r_major), B = 1/(2 r_minor)), and the force against the
-approach delta is Hertz's elliptical solution (Johnson Section 4.2, Eqs. 4.24-4.26):
+1985, Section 4.1, where A = 1/(2 r_major), B = 1/(2 r_minor)), and the force against the
+approach delta is Hertz's elliptical solution (Johnson Section 4.2):
 analytic.elliptical_hertz_force(E*, r_major, r_minor, delta), with the eccentricity from the ratio of the
 complete elliptic integrals. For a rigid plane K2 = 0. For r_major = r_minor = R it is (4/3) E* sqrt(R)
 delta^3/2, the paper's Eq. 6 with R* = R.
@@ -160,7 +160,7 @@ def support_point(distance, direction, samples, iterations=50):
 def relative_principal_radii(curvatures1, curvatures2, angle):
     """(r_major, r_minor) [m], r_major >= r_minor: the relative radii of two bodies touching with principal
     curvatures curvatures1 = (1/R1', 1/R1''), curvatures2 = (1/R2', 1/R2'') [1/m] and `angle` [rad] between the
-    directions of 1/R1' and 1/R2' (Johnson 1985, Eqs. 4.2-4.3):
+    directions of 1/R1' and 1/R2' (Johnson 1985, Section 4.1):
         A + B = (1/R1' + 1/R1'' + 1/R2' + 1/R2'') / 2,
         |B - A| = sqrt((1/R1' - 1/R1'')^2 + (1/R2' - 1/R2'')^2 + 2 (1/R1' - 1/R1'')(1/R2' - 1/R2'') cos 2 angle) / 2,
     r_major = 1/(2A), r_minor = 1/(2B). A plane has curvatures (0, 0)."""

@@ -4,6 +4,7 @@ built with YADE's Hertz-Mindlin contact law at the poses of the rounded bodies.
 
     clump_spheres(name, count)        centres [m] and radii [m] of a clump, in the shape's body frame
     shape_distance(name, points)      the shape's distance field f [m] at body-frame points [m]
+    body_frame(name, nodes)           the mesh, scale and frame of Mesh.reference_shape(name, nodes)
     mindlin_betan()                   YADE's damping ratio betan matched to the paper's Eq. 7 (dimensionless)
     add_clump(centres, radii, ...)    one clump of clump_spheres at a pose
     level_set_shape(name, ...)        the shape's YADE LevelSet
@@ -69,7 +70,7 @@ CLUMP_COUNTS = (10, 20, 40, 80)  # sphere counts of the speed-against-error stud
 
 # --- the shape's primitives and distance, in the body frame ------------------------------------------------
 
-def _frame(name, nodes=None):
+def body_frame(name, nodes=None):
     """(mesh, scale [m/unit], R (3, 3), centroid (3,) [m]) of Mesh.reference_shape(name, nodes): input point =
     R body point + centroid = scale x."""
     mesh, scale = shapes.mesh_with_scale(name, nodes)
@@ -115,7 +116,7 @@ def clump_spheres(name="gummy_bear", count=40):
     -13 % at 20 and -47 % at 10 (one sphere per capsule). Against the 554-node mesh, inscribed in f = 0 and
     2.4 % smaller, that is +1.2, +0.7, -11 and -46 %."""
     definition = shapes.definitions()["shapes"][name]
-    _, scale, rotation, centroid = _frame(name)
+    _, scale, rotation, centroid = body_frame(name)
     spheres = [p for p in definition["primitives"] if p["type"] == "sphere"]
     capsules = [p for p in definition["primitives"] if p["type"] == "capsule"]
     if count < len(spheres) + len(capsules):
@@ -156,13 +157,13 @@ def _blended_distance(definition, points):
 
 def shape_distance(name, points, nodes=None):
     """f of shape `name` (shapes.json) at body-frame points (n, 3) [m], in metres: negative inside, zero on the
-    surface the nodes of Mesh.reference_shape(name, nodes) lie on (each node count has its own scale and frame). f is the shape's own distance field: a smooth minimum of the primitives'
-    exact signed distances. Its gradient has norm at most 1, so |f| never exceeds the distance to the surface;
-    it equals it outside the primitives away from the blends, and inside down to the depth of the nearest
-    buried junction; in the blends (k = 0.06 shape units = 2.7 mm wide for the gummy bear) it falls short by
-    up to k/4."""
+    surface the nodes of Mesh.reference_shape(name, nodes) lie on (each node count has its own scale and frame).
+    f is the shape's own distance field: a smooth minimum of the primitives' exact signed distances. Its gradient
+    has norm at most 1, so |f| never exceeds the distance to the surface; it equals it outside the primitives away
+    from the blends, and inside down to the depth of the nearest buried junction; in the blends (k = 0.06 shape
+    units = 2.7 mm wide for the gummy bear) it falls short by up to k/4."""
     definition = shapes.definitions()["shapes"][name]
-    _, scale, rotation, centroid = _frame(name, nodes)
+    _, scale, rotation, centroid = body_frame(name, nodes)
     return scale * _blended_distance(definition, (np.asarray(points, dtype=float) @ rotation.T + centroid) / scale)
 
 

@@ -100,9 +100,9 @@ class SmoothShape:
         every representation's smooth shape alike. The identity for the sphere."""
         if self.name == "sphere":
             return np.eye(3)
-        own = peers._frame(self.name, self.nodes)[2]
+        own = peers.body_frame(self.name, self.nodes)[2]
         turn = own if self.rotation is None else own @ np.asarray(self.rotation)
-        return peers._frame(self.name)[2].T @ turn
+        return peers.body_frame(self.name)[2].T @ turn
 
     def samples(self):
         """Points on f = 0 [m], body frame, about 2 mm apart: the nodes of a 2562-node icosphere, or of the
@@ -116,7 +116,7 @@ def _surface_samples(shape):
         points = np.array(Mesh.icosphere(RADIUS, 4).vertices)
     else:
         fine, fine_scale = shapes.mesh_with_scale(shape.name, 2200)
-        _, scale, rotation, centroid = peers._frame(shape.name, shape.nodes)
+        _, scale, rotation, centroid = peers.body_frame(shape.name, shape.nodes)
         units = (np.array(fine.vertices) @ rotation_matrix(fine.orientation).T + np.array(fine.centroid)) / fine_scale
         points = (scale * units - centroid) @ rotation
     if shape.rotation is not None:

@@ -85,7 +85,7 @@ def test_gummy_bear_primitives_have_their_curvature_and_creases_are_found():
     curvature 1/(s rho) twice; the torso capsule's side has (0, 1/(s rho)): a line contact, 'flat' on a plane; on the
     cap, a hair from its junction with the cylinder, the contact crosses the crease and is left out."""
     definition = shapes.definitions()["shapes"]["gummy_bear"]
-    _, scale, rotation, centroid = peers._frame("gummy_bear")
+    _, scale, rotation, centroid = peers.body_frame("gummy_bear")
 
     def body(units):
         return rotation.T @ (scale * np.asarray(units, dtype=float) - centroid)
@@ -130,8 +130,8 @@ def test_sphere_on_plane_and_two_spheres_reduce_to_circular_hertz():
 
 
 def test_relative_radii_of_johnson_equal_the_eigenvalues_of_the_summed_curvature_tensors():
-    """Johnson's Eqs. 4.2-4.3 (angle between the principal directions) against the eigenvalues of K1 + K2
-    written in one frame: the same numbers to round-off (1e-12)."""
+    """Johnson's relative curvatures (Section 4.1; from the angle between the principal directions) against the
+    eigenvalues of K1 + K2 written in one frame: the same numbers to round-off (1e-12)."""
     rng = np.random.default_rng(3)
     for _ in range(50):
         k1, k2 = np.sort(rng.uniform(1, 200, size=2)), np.sort(rng.uniform(0, 200, size=2))
@@ -146,7 +146,7 @@ def test_relative_radii_of_johnson_equal_the_eigenvalues_of_the_summed_curvature
 
 def test_crossed_cylinders_are_a_sphere_on_a_plane():
     """Two cylinders of radius R crossed at right angles touch like a sphere of radius R on a plane (Johnson
-    Section 4.2): circular, F = (4/3) E* sqrt(R) delta^3/2."""
+    Section 4.1): circular, F = (4/3) E* sqrt(R) delta^3/2."""
     radius = 0.02
     r_major, r_minor = hr.relative_principal_radii((0, 1 / radius), (0, 1 / radius), math.pi / 2)
     np.testing.assert_allclose([r_major, r_minor], [radius, radius], rtol=1e-14)
@@ -213,9 +213,9 @@ def test_every_representation_stands_where_the_smooth_shape_does():
     for nodes in (None, 1100):
         shape = se.SmoothShape("gummy_bear", nodes)
         geometry = se.press_geometry(shape, upper)
-        _, scale, rotation, centroid = peers._frame("gummy_bear", nodes)
+        _, scale, rotation, centroid = peers.body_frame("gummy_bear", nodes)
         points.append((rotation @ geometry.upper_point + centroid) / scale)
-    assert np.linalg.norm(points[0] - points[1]) * peers._frame("gummy_bear")[1] < 1e-3 * se.RADIUS
+    assert np.linalg.norm(points[0] - points[1]) * peers.body_frame("gummy_bear")[1] < 1e-3 * se.RADIUS
 
 
 # --- the script ---------------------------------------------------------------------------------------------
