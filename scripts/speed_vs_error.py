@@ -35,6 +35,7 @@ import sys
 import numpy as np
 
 from roundedmesh import shape_error as se
+from roundedmesh.export import write_csv
 from roundedmesh.validation import pair_poses
 
 SHAPES = ("sphere", "pear", "gummy_bear")
@@ -93,10 +94,8 @@ def run_part(shape, family, poses, quick, output):
     os.makedirs(os.path.join(output, "parts"), exist_ok=True)
     columns = ["shape", "family", "configuration", "size", "partner", "pose", "left_out", "nrmse", "angle",
                "r_major", "r_minor"]
-    with open(os.path.join(output, "parts", f"{shape}_{family}.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, columns)
-        writer.writeheader()
-        writer.writerows(rows)
+    write_csv(os.path.join(output, "parts", f"{shape}_{family}.csv"), columns,
+              [[row.get(c, "") for c in columns] for row in rows])
 
 
 def summarize(output):
@@ -128,10 +127,7 @@ def summarize(output):
             "angle worst [deg]": f"{angles.max():.2g}" if len(used) else ""})
     if not summary:
         return summary
-    with open(os.path.join(output, "errors.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, list(summary[0]))
-        writer.writeheader()
-        writer.writerows(summary)
+    write_csv(os.path.join(output, "errors.csv"), list(summary[0]), [list(row.values()) for row in summary])
     with open(os.path.join(output, "errors.md"), "w") as f:
         f.write("| " + " | ".join(summary[0]) + " |\n|" + "---|" * len(summary[0]) + "\n")
         for row in summary:
