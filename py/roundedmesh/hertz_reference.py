@@ -224,11 +224,12 @@ def hertz_holds(modulus, overlap, bodies, second_contact_gaps, flat_ratio=1e-3):
         if tangent_principal(tensor, normal)[0][0] < -1e-9 * np.max(np.abs(tensor)):
             return "concave"
         tensors.append(rotation @ tensor @ rotation.T)
-    total = tensors[0] + (tensors[1] if len(tensors) > 1 else 0)
-    curvatures, directions = tangent_principal(total, _UNIT[2])
-    if curvatures[0] < flat_ratio * curvatures[1]:
+    r_major, r_minor, major = contact_radii(tensors[0], tensors[1] if len(tensors) > 1 else 0 * tensors[0],
+                                            _UNIT[2])
+    if r_minor < flat_ratio * r_major:          # 1/r_major below flat_ratio of 1/r_minor (or r_major inf)
         return "flat"
-    a, b = contact_semi_axes(modulus, 1 / curvatures[0], 1 / curvatures[1], overlap)
+    a, b = contact_semi_axes(modulus, r_major, r_minor, overlap)
+    directions = np.array([major, np.cross(_UNIT[2], major)])
     for distance, point, _, rotation in bodies:
         if crease_ratio(distance, point, directions @ rotation, (a, b)) > CREASE_TOLERANCE:
             return "crease"

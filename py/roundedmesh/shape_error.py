@@ -28,7 +28,7 @@ forces depend on the positions only, so a quasi-static press is one step per ove
 """
 import functools
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 from scipy.spatial.transform import Rotation
@@ -145,7 +145,8 @@ class PressGeometry:
         upper, lower           orientations (Quaternion) of the pressed body's frame and of the copy's (None on
                                a plane)
         upper_point, lower_point   support points in the body frames [m]
-        touch_upper, touch_lower   positions [m] at which the bodies touch (delta = 0); the lower one is 0
+        touch_upper            position [m] of the upper body where the bodies touch (delta = 0); the lower
+                               copy stands at the origin
         r_major, r_minor       relative principal radii of the smooth shapes [m] (inf, when 'flat')
         principal              the bodies' principal curvatures at their points [1/m]
         left_out               None, or why Hertz is no reference here (hertz_reference.hertz_holds)"""
@@ -156,7 +157,6 @@ class PressGeometry:
     upper_point: np.ndarray = None
     lower_point: np.ndarray = None
     touch_upper: np.ndarray = None
-    touch_lower: np.ndarray = field(default_factory=lambda: np.zeros(3))
     r_major: float = math.nan
     r_minor: float = math.nan
     principal: list = None
@@ -191,14 +191,13 @@ def press_geometry(shape, upper, lower=None):
     up_tensor = hr.curvature_tensor(shape.distance, up_point)[1]
     bodies = [(shape.distance, up_point, up_tensor, r_up)]
     up_global = samples @ r_up.T                       # sample points turned, the body at the origin
-    geometry = PressGeometry(shape, "plane" if lower is None else "self", upper, lower, upper_point=up_point)
+    geometry = PressGeometry(shape, "plane" if lower is None else "self", upper, upper_point=up_point)
     if lower is None:
         height = -(r_up @ up_point)[2]
         geometry.touch_upper = np.array([0.0, 0.0, height])
         gaps = up_global[:, 2] + height                  # heights above the plane
         far = np.linalg.norm(up_global - r_up @ up_point, axis=1)
-        contact_global = r_up @ up_point + geometry.touch_upper
-        tensors = [r_up @ up_tensor @ r_up.T]
+        tensors = [r_up @ up_tensor @ r_up.T, np.zeros((3, 3))]
     else:
         r_low = rotation_matrix(lower) @ to_common
         geometry.lower = _quaternion(r_low)
@@ -215,11 +214,8 @@ def press_geometry(shape, upper, lower=None):
                                shape.distance(upper_samples @ r_low)])
         far = np.linalg.norm(np.concatenate([lower_samples, upper_samples]) - contact_global, axis=1)
         tensors = [r_low @ low_tensor @ r_low.T, r_up @ up_tensor @ r_up.T]
-    total = sum(tensors)
-    curvatures = hr.tangent_principal(total, _Z)[0]
-    geometry.principal = [hr.tangent_principal(t, _Z)[0] for t in tensors]
-    geometry.r_major = math.inf if curvatures[0] <= 0 else 1 / curvatures[0]
-    geometry.r_minor = 1 / curvatures[1]
+    geometry.r_major, geometry.r_minor, _ = hr.contact_radii(tensors[0], tensors[1], _Z)
+    geometry.principal = [hr.tangent_principal(t, _Z)[0] for t in tensors[:len(bodies)]]
     reach = 3e-3
     if math.isfinite(geometry.r_major):
         reach += SECOND_CONTACT_REACH * hr.contact_semi_axes(modulus(geometry.partner), geometry.r_major,
