@@ -5,21 +5,26 @@ curvatures in 1/m, forces in newtons.
 A smooth shape is given by its implicit function f (negative inside, zero on the surface, |grad f| > 0 there):
 peers.shape_distance for the pear and the gummy bear of shapes.json, |x| - r for the sphere.
 
+    derivatives(f, x)                    f, grad f and the Hessian by central differences
     curvature_tensor(f, x)               outward normal and shape operator P H P / |grad f| at a surface point
+    tangent_principal(K, n)              principal curvatures and directions of a shape operator
     principal_curvatures(f, x)           (k_min, k_max), their directions, the normal
+    project_to_surface(f, x)             the point of f = 0 reached from x along grad f
     support_point(f, d, samples)         the surface point farthest along d (where the normal is d)
     relative_principal_radii(...)        Johnson's relative radii of two bodies from their principal curvatures
                                          and the angle between their principal directions
-    contact_radii(K1, K2)                the same from the two curvature tensors in a common frame
-    reference_force(E, K1, K2, delta)    exact elliptical Hertz force (analytic.elliptical_hertz_force)
+    contact_radii(K1, K2, n)             the same from the two curvature tensors in a common frame
+    reference_force(E, r_major, r_minor, delta)   exact elliptical Hertz force (analytic.elliptical_hertz_force)
+    contact_semi_axes(E, r_major, r_minor, delta) semi-axes of Hertz's contact ellipse
+    crease_ratio(f, x, tangents, reach)  how much the curvatures change over a contact's reach
     hertz_holds(...)                     None, or why the pose is left out: 'concave', 'flat', 'crease',
                                          'second contact'
 
 Curvature (a). For a surface f = 0 with outward normal n = grad f / |grad f| the shape operator (Weingarten map)
 is K = P H P / |grad f|, with H the Hessian of f and P = I - n n^T the projection on the tangent plane (e.g.
 Goldman, "Curvature formulas for implicit curves and surfaces", Comput. Aided Geom. Des. 22 (2005) 632-658).
-Its two non-zero eigenvalues are the principal curvatures, positive where the surface is convex (the sphere |x| - r
-gives 1/r twice). The gradient and Hessian are central differences with step FD_STEP.
+Its two non-zero eigenvalues are the principal curvatures, positive where the surface is convex (the sphere
+|x| - r gives 1/r twice). The gradient and Hessian are central differences with step FD_STEP.
 
 Contact law (b): two bodies touching at a point where their outward normals are opposite have, in the common
 tangent plane, the gap h = x^T (K1 + K2) x / 2 (each K in the tangent plane, in the same axes). Its eigenvalues
@@ -46,8 +51,9 @@ FD_STEP = 1e-5
 
 # Curvatures at the rim of the contact ellipse (at the deepest overlap) may differ from the contact point's by at
 # most this share of the larger principal curvature there; more is a crease (a blend's or capsule's edge) for
-# Hertz, whose gap is quadratic over the whole contact. 10 % of the curvature at the rim, where the pressure
-# falls to zero, changes the force by well under 5 % (F grows as the square root of the radius).
+# Hertz, whose gap is quadratic over the whole contact. Even if it held over the whole contact, a 10 % change of
+# curvature would change Hertz's force (growing as the square root of the radius) by at most 5 %; it holds only
+# at the rim, where the pressure falls to zero.
 CREASE_TOLERANCE = 0.10
 
 _UNIT = np.eye(3)
@@ -207,14 +213,14 @@ def crease_ratio(distance, point, tangents, reach):
     return worst / scale
 
 
-def hertz_holds(modulus, overlap, bodies, second_contact_gaps, flat_ratio=1e-3):
+def hertz_holds(modulus, overlap, bodies, second_contact, flat_ratio=1e-3):
     """None if Hertz's solution is a fair reference for a contact pressed to `overlap` [m], else the reason:
         'concave'         a principal curvature of a body at its contact point is negative;
         'flat'            the relative curvature 1/r_major is below `flat_ratio` of 1/r_minor (a line contact,
                           whose length Hertz does not bound);
         'crease'          a body's curvature changes by more than CREASE_TOLERANCE over the contact ellipse at
                           `overlap` (crease_ratio at the semi-axes);
-        'second contact'  the bodies come within reach of each other elsewhere (second_contact_gaps is True).
+        'second contact'  the bodies come within reach of each other elsewhere (`second_contact` is True).
     `bodies` is a list of (distance, point, tensor, body_to_common) per body (one for a plane partner): its
     implicit function, contact point and shape operator in its own frame, and the rotation (3, 3) from its
     frame to the common one, where the contact normal is +z for the first body."""
@@ -233,6 +239,6 @@ def hertz_holds(modulus, overlap, bodies, second_contact_gaps, flat_ratio=1e-3):
     for distance, point, _, rotation in bodies:
         if crease_ratio(distance, point, directions @ rotation, (a, b)) > CREASE_TOLERANCE:
             return "crease"
-    if second_contact_gaps:
+    if second_contact:
         return "second contact"
     return None
