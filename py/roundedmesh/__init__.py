@@ -12,11 +12,12 @@ discrete element method", Comput. Methods Appl. Mech. Engrg. 277 (2014) 219-238,
     O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
 
 The submodules come with the package (rm.export, rm.progress, rm.scenes, rm.analytic, rm.validation,
-rm.benchmarking, rm.shapes, rm.contact, rm.scene, rm.meshfiles, rm.checkpoint). See doc/user-guide.md.
+rm.benchmarking, rm.shapes, rm.contact, rm.scene, rm.meshfiles, rm.checkpoint, rm.hertz_reference,
+rm.shape_error). See doc/user-guide.md.
 """
 from . import _yade  # noqa: F401  (YADE's converters must exist before _core returns vectors)
-from . import (analytic, benchmarking, checkpoint, contact, export, meshfiles, peers, progress, scene, scenes,  # noqa: F401
-               shapes, validation)
+from . import (analytic, benchmarking, checkpoint, contact, export, hertz_reference, meshfiles, peers,  # noqa: F401
+               progress, scene, scenes, shape_error, shapes, validation)
 from ._core import HertzMaterial, Mesh, plane_contact
 from .contact import body_contact, sphere_contact, triangle_contacts
 from .scene import _restore_mesh  # noqa: F401  (Mesh.__reduce__ names it as roundedmesh._restore_mesh)

@@ -4,7 +4,11 @@ built with YADE's Hertz-Mindlin contact law at the poses of the rounded bodies.
 
     clump_spheres(name, count)        centres [m] and radii [m] of a clump, in the shape's body frame
     shape_distance(name, points)      the shape's distance field f [m] at body-frame points [m]
+    body_frame(name, nodes)           the mesh, scale and frame of Mesh.reference_shape(name, nodes)
     mindlin_betan()                   YADE's damping ratio betan matched to the paper's Eq. 7 (dimensionless)
+    add_clump(centres, radii, ...)    one clump of clump_spheres at a pose
+    level_set_shape(name, ...)        the shape's YADE LevelSet
+    add_level_set_body(shape, ...)    one level-set body at a pose
     build_clumps(poses, count)        S1's box and one clump per pose (resets O)
     build_level_sets(poses, ...)      S1's box and one level-set body per pose (resets O)
     build_spheres(poses)              S1's box and one sphere of the volume-equivalent radius per pose (resets O)
@@ -66,9 +70,10 @@ CLUMP_COUNTS = (10, 20, 40, 80)  # sphere counts of the speed-against-error stud
 
 # --- the shape's primitives and distance, in the body frame ------------------------------------------------
 
-def _frame(name):
-    """(mesh, scale [m/unit], R (3, 3), centroid (3,) [m]): input point = R body point + centroid = scale x."""
-    mesh, scale = shapes.mesh_with_scale(name)
+def body_frame(name, nodes=None):
+    """(mesh, scale [m/unit], R (3, 3), centroid (3,) [m]) of Mesh.reference_shape(name, nodes): input point =
+    R body point + centroid = scale x."""
+    mesh, scale = shapes.mesh_with_scale(name, nodes)
     return mesh, scale, np.array(mesh.orientation.toRotationMatrix()), np.array(mesh.centroid)
 
 
@@ -111,7 +116,7 @@ def clump_spheres(name="gummy_bear", count=40):
     -13 % at 20 and -47 % at 10 (one sphere per capsule). Against the 554-node mesh, inscribed in f = 0 and
     2.4 % smaller, that is +1.2, +0.7, -11 and -46 %."""
     definition = shapes.definitions()["shapes"][name]
-    _, scale, rotation, centroid = _frame(name)
+    _, scale, rotation, centroid = body_frame(name)
     spheres = [p for p in definition["primitives"] if p["type"] == "sphere"]
     capsules = [p for p in definition["primitives"] if p["type"] == "capsule"]
     if count < len(spheres) + len(capsules):
@@ -150,15 +155,15 @@ def _blended_distance(definition, points):
     return d
 
 
-def shape_distance(name, points):
+def shape_distance(name, points, nodes=None):
     """f of shape `name` (shapes.json) at body-frame points (n, 3) [m], in metres: negative inside, zero on the
-    surface the mesh's nodes lie on. f is the shape's own distance field: a smooth minimum of the primitives'
-    exact signed distances. Its gradient has norm at most 1, so |f| never exceeds the distance to the surface;
-    it equals it outside the primitives away from the blends, and inside down to the depth of the nearest
-    buried junction; in the blends (k = 0.06 shape units = 2.7 mm wide for the gummy bear) it falls short by
-    up to k/4."""
+    surface the nodes of Mesh.reference_shape(name, nodes) lie on (each node count has its own scale and frame).
+    f is the shape's own distance field: a smooth minimum of the primitives' exact signed distances. Its gradient
+    has norm at most 1, so |f| never exceeds the distance to the surface; it equals it outside the primitives away
+    from the blends, and inside down to the depth of the nearest buried junction; in the blends (k = 0.06 shape
+    units = 2.7 mm wide for the gummy bear) it falls short by up to k/4."""
     definition = shapes.definitions()["shapes"][name]
-    _, scale, rotation, centroid = _frame(name)
+    _, scale, rotation, centroid = body_frame(name, nodes)
     return scale * _blended_distance(definition, (np.asarray(points, dtype=float) @ rotation.T + centroid) / scale)
 
 
@@ -270,6 +275,23 @@ def build_rounded(poses, name="gummy_bear", nodes=None, **engine_options):
     return ids
 
 
+def add_clump(centres, radii, position, ori, material, mass, discretization=30):
+    """Appends to O a clump of spheres of `radii` [m] at body-frame `centres` [m] (clump_spheres) for a body at
+    `position` [m] turned by `ori` (Quaternion), of FrictMat id `material`, with mass `mass` [kg] and the principal
+    inertia YADE integrates for the union (O.bodies.appendClumped on a grid of `discretization` cells) scaled to
+    that mass; every member's own mass is set to the clump's (build_clumps). Returns (clump id, member ids)."""
+    rotation = np.array(ori.toRotationMatrix())
+    members = [utils.sphere(Vector3(*(np.array(position) + rotation @ c)), float(rho), material=material)
+               for c, rho in zip(centres, radii)]
+    clump, member_ids = O.bodies.appendClumped(members, discretization=discretization)
+    state = O.bodies[clump].state
+    state.inertia = state.inertia * (mass / state.mass)
+    state.mass = mass
+    for member in member_ids:
+        O.bodies[member].state.mass = mass
+    return clump, member_ids
+
+
 def build_clumps(poses, count=40, name="gummy_bear", discretization=30):
     """S1 with one clump of `count` spheres (clump_spheres) per pose (resets O); returns the clumps' ids.
 
@@ -288,17 +310,10 @@ def build_clumps(poses, count=40, name="gummy_bear", discretization=30):
     ids = []
     for pose in poses:
         position, ori, velocity, angular = _pose(pose)
-        rotation = np.array(ori.toRotationMatrix())
-        members = [utils.sphere(Vector3(*(np.array(position) + rotation @ c)), float(rho), material=particle)
-                   for c, rho in zip(centres, radii)]
-        clump, member_ids = O.bodies.appendClumped(members, discretization=discretization)
+        clump, _ = add_clump(centres, radii, position, ori, particle, mass, discretization)
         state = O.bodies[clump].state
-        state.inertia = state.inertia * (mass / state.mass)
-        state.mass = mass
         state.vel = velocity + angular.cross(state.pos - position)
         state.angVel = angular
-        for member in member_ids:
-            O.bodies[member].state.mass = mass
         ids.append(clump)
     _set_engines([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()], [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
                  particle, box)
@@ -324,6 +339,22 @@ def level_set_shape(name="gummy_bear", spacing=1e-3, surface_nodes=511):
     return shape
 
 
+def add_level_set_body(shape, position, ori, material, mass, inertia):
+    """Appends to O a body of LevelSet `shape` (level_set_shape, may be shared) at `position` [m] turned by `ori`
+    (Quaternion), of FrictMat id `material`, mass `mass` [kg] and principal inertia `inertia` (3,) [kg m^2].
+    Returns its id."""
+    body = Body()
+    body.shape = shape
+    body.material = O.materials[material]
+    body.state = body.material.newAssocState()
+    body.state.mass = mass
+    body.state.inertia = Vector3(*inertia)
+    body.aspherical = True
+    body.state.pos = body.state.refPos = position
+    body.state.ori = body.state.refOri = ori
+    return O.bodies.append(body)
+
+
 def build_level_sets(poses, name="gummy_bear", spacing=1e-3, surface_nodes=511, verlet_distance=0.0):
     """S1 with one level-set body per pose (resets O), all sharing one LevelSet (level_set_shape): the
     distance field and nodes utils.levelSetBody would build once per body, read-only during the step. Mass
@@ -341,17 +372,10 @@ def build_level_sets(poses, name="gummy_bear", spacing=1e-3, surface_nodes=511, 
     ids = []
     for pose in poses:
         position, ori, velocity, angular = _pose(pose)
-        body = Body()
-        body.shape = shape
-        body.material = O.materials[particle]
-        body.state = body.material.newAssocState()
-        body.state.mass = density * mesh.volume
-        body.state.inertia = Vector3(*(density * np.array(mesh.inertia)))
-        body.aspherical = True
-        body.state.pos = body.state.refPos = position
-        body.state.ori = body.state.refOri = ori
-        body.state.vel, body.state.angVel = velocity, angular
-        ids.append(O.bodies.append(body))
+        body = add_level_set_body(shape, position, ori, particle, density * mesh.volume,
+                                  density * np.array(mesh.inertia))
+        O.bodies[body].state.vel, O.bodies[body].state.angVel = velocity, angular
+        ids.append(body)
     _set_engines([Bo1_LevelSet_Aabb(), Bo1_Wall_Aabb()], [Ig2_LevelSet_LevelSet_ScGeom(), Ig2_Wall_LevelSet_ScGeom()],
                  particle, box, verlet_distance)
     return ids
