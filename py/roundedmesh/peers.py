@@ -52,7 +52,7 @@ from yade import (Body, FrictMat, ForceResetter, InsertionSortCollider, Interact
 from yade import (Bo1_LevelSet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, Ig2_LevelSet_LevelSet_ScGeom,
                   Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_LevelSet_ScGeom, Ig2_Wall_Sphere_ScGeom,
                   Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin, LevelSet, RegularGrid)
-from yade.minieigenHP import Quaternion, Vector3, Vector3i
+from yade.minieigenHP import Matrix3, Quaternion, Vector3, Vector3i
 
 from . import scene, shapes
 from ._core import HertzMaterial
@@ -256,14 +256,19 @@ def build_spheres(poses):
 def build_rounded(poses, name="gummy_bear", nodes=None, **engine_options):
     """S1 with one rounded body of Mesh.reference_shape(name, nodes) per pose (resets O), with S1's HertzMaterials
     (Eq. 7 damping A on both) and the roundedmesh engine (roundedmesh.engine's options, e.g. regime): the
-    representation the others are compared with. Returns the bodies' ids."""
+    representation the others are compared with. The poses are of the default mesh's principal frame; a mesh of
+    other `nodes` has its own (its axes may even be ordered otherwise), so each body is placed where its smooth
+    shape coincides with the default mesh's. Returns the bodies' ids."""
     O.reset()
-    mesh = shapes.reference_shape(name, nodes)
+    mesh, _, own_axes, own_centroid = body_frame(name, nodes)
+    _, _, axes, centroid = body_frame(name)
+    turn = Quaternion(Matrix3(*(axes.T @ own_axes).flatten()))  # this mesh's frame -> the default mesh's
+    shift = axes.T @ (own_centroid - centroid)                  # its origin in the default mesh's frame [m]
     particle = HertzMaterial(damping=DAMPING_CONSTANT, **PARTICLE)
     ids = []
     for pose in poses:
         position, ori, velocity, angular = _pose(pose)
-        body = scene.add_body(mesh, position, ori, particle)
+        body = scene.add_body(mesh, position + ori * Vector3(*shift), ori * turn, particle)
         O.bodies[body].state.vel, O.bodies[body].state.angVel = velocity, angular
         ids.append(body)
     for wall in (utils.wall(0, axis=2, sense=1), utils.wall(-HALF_BASE, axis=0, sense=1),
