@@ -8,6 +8,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <new>
@@ -31,14 +32,75 @@ std::string format(const std::string& path) {
   return extension;
 }
 
-// CGAL 5.5's PLY reader trusts the header (each case found by fuzz/ply_reader_fuzzer, doc/reliability.md):
-// a property before any element is added to the last element of an empty vector; an element's count sizes
-// arrays and loops however few bytes follow (gigabytes, or minutes, from a file of a few hundred bytes); and a
-// vertex coordinate that is not a float or double, or a face's corner list that is not a list, is cast to the
-// type it expects and the null result dereferenced. Such headers are refused here, before CGAL reads the file.
-void requireReadablePlyHeader(const std::string& path, std::uintmax_t fileSize) {
+// The size of a PLY scalar type [bytes]; 0 for a name PLY does not have.
+int plyTypeSize(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
+    return 4;
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+struct PlyProperty {
+  int countSize = 0;  // bytes of a list's count; 0 for a scalar
+  bool countSigned = false;
+  int size = 0;       // bytes of the scalar, or of each list item
+};
+
+struct PlyElement {
+  std::string name;
+  std::uintmax_t count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+// Every list count in the file's data, in its order of elements, rows and properties, must be at most the file's
+// size: nothing in a file can need more entries than it has bytes. CGAL resizes a face's corner list by the count
+// as it stands (2 GB asked for by a binary file of 442 bytes: ply_reader_fuzzer). Data that ends early is left
+// to CGAL, which refuses it.
+void requireBoundedPlyLists(std::istream& in, const std::string& format, const std::vector<PlyElement>& elements,
+                            std::uintmax_t fileSize, const std::string& path) {
+  const bool ascii = format == "ascii", little = format == "binary_little_endian";
+  // The next value as a number: a text token, or `size` bytes as an integer in the file's byte order.
+  auto next = [&](int size, bool isSigned, double& value) {
+    if (ascii) return static_cast<bool>(in >> value);
+    unsigned char bytes[8];
+    if (!in.read(reinterpret_cast<char*>(bytes), size)) return false;
+    std::uint64_t bits = 0;
+    for (int i = 0; i < size; ++i) bits |= std::uint64_t(bytes[little ? i : size - 1 - i]) << (8 * i);
+    const bool negative = isSigned && (bits >> (8 * size - 1)) & 1;
+    value = negative ? -double((~bits + 1) & (size == 8 ? ~0ull : (1ull << (8 * size)) - 1)) : double(bits);
+    return true;
+  };
+  for (const PlyElement& element : elements)
+    for (std::uintmax_t row = 0; row < element.count; ++row)
+      for (const PlyProperty& property : element.properties) {
+        double value = 0;
+        if (property.countSize == 0) {
+          if (ascii ? !(in >> value) : !in.ignore(property.size)) return;
+          continue;
+        }
+        if (!next(property.countSize, property.countSigned, value)) return;
+        if (!(value >= 0 && value <= double(fileSize)))
+          throw std::invalid_argument(path + ": PLY element '" + element.name + "' row " + std::to_string(row) +
+                                      " holds a list of " + std::to_string(value) + " items in a file of " +
+                                      std::to_string(fileSize) + " bytes");
+        const auto items = static_cast<std::uintmax_t>(value);
+        for (std::uintmax_t i = 0; i < items; ++i)
+          if (ascii ? !(in >> value) : !in.ignore(property.size)) return;
+      }
+}
+
+// CGAL 5.5's PLY reader trusts the header and the data (each case found by fuzz/ply_reader_fuzzer,
+// doc/reliability.md): a property before any element is added to the last element of an empty vector; an element's
+// count, or a list's, sizes arrays and loops however few bytes follow (gigabytes, or minutes, from a file of a few
+// hundred bytes); and a vertex coordinate that is not a float or double, or a face's corner list that is not a list,
+// is cast to the type it expects and the null result dereferenced. Such files are refused here, before CGAL reads
+// them.
+void requireReadablePly(const std::string& path, std::uintmax_t fileSize) {
   std::ifstream in(path, std::ios::binary);
-  std::string line, element;
+  std::string line, format;
+  std::vector<PlyElement> elements;
   for (int number = 1; std::getline(in, line); ++number) {
     auto refuse = [&](const std::string& what) {
       throw std::invalid_argument(path + ": PLY header line " + std::to_string(number) + " " + what);
@@ -46,26 +108,36 @@ void requireReadablePlyHeader(const std::string& path, std::uintmax_t fileSize) 
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
-    if (keyword == "end_header") return;
-    if (keyword == "element") {
+    if (keyword == "end_header") return requireBoundedPlyLists(in, format, elements, fileSize, path);
+    if (keyword == "format") {
+      words >> format;
+    } else if (keyword == "element") {
+      std::string name;
       double count = -1;
-      words >> element >> count;
+      words >> name >> count;
       if (!(count >= 0 && count <= double(fileSize)))
-        refuse("declares " + std::to_string(count) + " elements '" + element + "' in a file of " +
+        refuse("declares " + std::to_string(count) + " elements '" + name + "' in a file of " +
                std::to_string(fileSize) + " bytes");
+      elements.push_back({name, static_cast<std::uintmax_t>(count), {}});
     } else if (keyword == "property") {
-      if (element.empty()) refuse("declares a property before any element");
-      std::string type, name;
+      if (elements.empty()) refuse("declares a property before any element");
+      const std::string& element = elements.back().name;
+      std::string type, countType, name;
       words >> type;
       const bool list = type == "list";
-      if (list) words >> type >> type;  // the count's type, then the items'
+      if (list) words >> countType >> type;
       words >> name;
+      PlyProperty property{list ? plyTypeSize(countType) : 0, !countType.empty() && countType[0] != 'u',
+                           plyTypeSize(type)};
+      if (property.size == 0 || (list && property.countSize == 0))
+        refuse("declares the property " + name + " of a type PLY does not have");
       const bool real = type == "float" || type == "float32" || type == "double" || type == "float64";
       if (element == "vertex" && (name == "x" || name == "y" || name == "z") && (list || !real))
         refuse("declares the vertex coordinate " + name + " as " + (list ? "a list" : "'" + type + "'") +
                "; it must be a float or a double");
       if (element == "face" && (name == "vertex_indices" || name == "vertex_index") && !list)
         refuse("declares the face's " + name + " as one '" + type + "'; it must be a list");
+      elements.back().properties.push_back(property);
     }
   }
 }
@@ -135,7 +207,7 @@ TriangleSurface readMeshFile(const std::string& path, Real scale) {
     if (kind == "obj") read = CGAL::IO::read_OBJ(in, points, polygons);
     else if (kind == "off") read = readOff(in, std::filesystem::file_size(path, error), points, polygons);
     else if (kind == "ply") {
-      requireReadablePlyHeader(path, std::filesystem::file_size(path, error));
+      requireReadablePly(path, std::filesystem::file_size(path, error));
       read = CGAL::IO::read_PLY(in, points, polygons, CGAL::parameters::verbose(false));
     }
     else read = CGAL::IO::read_STL(in, points, polygons, CGAL::parameters::verbose(false));

@@ -93,5 +93,13 @@ TEST(FuzzRegression, PlyHeadersCgalWouldTrustAreRefused) {
   }
 }
 
+// ply_reader_fuzzer, long run of this release: CGAL's PLY reader also trusts a face's corner count. A binary file of
+// 442 bytes whose first list count reads 540,356,145 (the bytes "1.5 ") asked for 2.16 GB.
+TEST(FuzzRegression, PlyListCountsBeyondTheFileAreRefused) {
+  const std::string message = refusal([] { readMeshFile(kData + "huge_list_count.ply"); });
+  EXPECT_EQ(message.rfind(kData + "huge_list_count.ply: PLY element 'fa' row 0 holds a list of 540356145", 0), 0u)
+      << message;
+}
+
 }  // namespace
 }  // namespace roundedmesh
