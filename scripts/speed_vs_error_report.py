@@ -15,6 +15,7 @@ starts S1 overlapped past a tenth of r_eq) are in the table, not in the plot: a 
 
 Writes to --output:
     pareto.csv          one row per gummy-bear configuration: errors per partner and statistic, cost, on the front
+    pareto.md           the same table in markdown
     pareto.png          error [%] against CPU ms per step, log-log, median (left) and worst pose (right), one marker
                         per configuration, the Pareto front as a step line, its points labelled
     guide.md            for 1 %, 5 %, 20 %: the cheapest configuration overall and per family, its cost; the ratio
@@ -127,7 +128,7 @@ def label(row):
 
 
 def write_table(rows, fronts, path):
-    """pareto.csv."""
+    """pareto.csv, and the same table as markdown beside it (pareto.md)."""
     header = (["family", "configuration", "nodes or spheres"]
               + [f"{p} NRMSE {s} [%]" for s in STATISTICS for p in ("plane", "copy")]
               + [f"NRMSE {s}, worse partner [%]" for s in STATISTICS]
@@ -145,6 +146,10 @@ def write_table(rows, fronts, path):
                         "" if r["wall_ms"] is None else f"{r['wall_ms']:.3f}", cost]
                      + ["yes" if r in fronts[s] else "" for s in STATISTICS])
     write_csv(path, header, lines)
+    with open(os.path.splitext(path)[0] + ".md", "w") as f:
+        f.write("| " + " | ".join(header) + " |\n|" + "---|" * len(header) + "\n")
+        for line in lines:
+            f.write("| " + " | ".join(f"{v:.3g}" if isinstance(v, float) else str(v) for v in line) + " |\n")
 
 
 def style(row):
@@ -214,7 +219,8 @@ def comparison(rows, statistic, target):
         theirs = cheapest(rows, target, statistic, family)
         if theirs is None:
             best = most_accurate(rows, statistic, family)
-            reach = "" if best is None else f"; the best it reaches is {describe(best, statistic)}"
+            reach = "" if best is None else (f"; the best it reaches is {describe(best, statistic)}, and roundedmesh "
+                                             f"/ that = {ours['cpu_ms'] / best['cpu_ms']:.2f}")
             sentences.append(f"No {name} reaches {target:g} %{reach}.")
         else:
             ratio = ours["cpu_ms"] / theirs["cpu_ms"]
