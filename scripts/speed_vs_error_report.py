@@ -42,7 +42,7 @@ TARGETS = (1.0, 5.0, 20.0)                     # NRMSE [%] the guide answers for
 COMPARED_AT = 5.0                              # the closing note's target [%]
 NO_FORCE = 53.1                                # NRMSE [%] of a representation with no force within 0.5 mm
 STUDY = ("doc/speed-vs-error.md; scripts/speed_vs_error.py (errors), scripts/speed_vs_error_costs.py (S1 costs), "
-         "scripts/speed_vs_error_report.py (this file)")
+         "scripts/speed_vs_error_report.py (the report and this data)")
 
 
 def read_errors(path):
@@ -247,8 +247,9 @@ def guide(rows, machine):
         lines += ["", *comparison(rows, statistic, COMPARED_AT), ""]
     copy_only = [dict(r, error={s: r["partners"].get(("self", s)) for s in STATISTICS}) for r in rows]
     lines += ["## Bear on bear only (copy partner, median pose)", "",
-              "Most contacts of S1 are between bears; YADE's Wall gives a clump's spheres half their radius "
-              "(15.6 % on the plane), so clumps are judged here on the copy alone.", "",
+              "Most contacts of S1 are between bears; against YADE's Wall a clump's sphere gets R* = r/2 where a "
+              "plane has r (15.6 % on the plane at every clump size), so clumps are judged here on the copy alone.",
+              "",
               *comparison(copy_only, "median", COMPARED_AT), ""]
     return "\n".join(lines)
 
