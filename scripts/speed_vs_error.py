@@ -4,7 +4,7 @@ overlap up to 2 % of r = 25 mm, against Hertz's solution at the smooth shape's c
 (roundedmesh.hertz_reference, roundedmesh.shape_error).
 
     /usr/bin/python3 scripts/speed_vs_error.py [--quick] [--poses N] [--shapes ...] [--families ...]
-                                               [--output out/speed_vs_error]
+                                               [--costs] [--report] [--output out/speed_vs_error]
 
 Representations (CONFIGURATIONS): roundedmesh at several mesh sizes with the curvature computed (Eq. 1) in the
 'auto', 'quadrature' and 'direct' regimes and prescribed ('auto'); YADE's clumps of spheres built from the
@@ -24,12 +24,16 @@ then from every part present:
     errors_side_by_side.md   one row per configuration, plane and copy side by side (doc/speed-vs-error.md)
 so that the families can be run one at a time (each well under 10 minutes on two busy cores with --poses 30).
 --quick: 3 poses, two configurations per family, every shape (under a minute).
+--costs: then the cost axis, scripts/speed_vs_error_costs.py (with --quick if given) into the same folder;
+--report: then the report, scripts/speed_vs_error_report.py (pareto.csv, pareto.png, guide.md, speed_vs_error.json)
+from that folder's errors.csv and costs.csv. The whole study: --poses 60 --costs --report.
 """
 import argparse
 import collections
 import csv
 import glob
 import os
+import subprocess
 import sys
 
 import numpy as np
@@ -37,6 +41,8 @@ import numpy as np
 from roundedmesh import shape_error as se
 from roundedmesh.export import write_csv
 from roundedmesh.validation import pair_poses
+
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 SHAPES = ("sphere", "pear", "gummy_bear")
 FAMILIES = ("roundedmesh", "clumps", "level_sets")
@@ -167,6 +173,8 @@ def main(argv=None):
     parser.add_argument("--poses", type=int, default=30, help="orientation pairs (default 30)")
     parser.add_argument("--shapes", nargs="+", choices=SHAPES, default=list(SHAPES))
     parser.add_argument("--families", nargs="+", choices=FAMILIES, default=list(FAMILIES))
+    parser.add_argument("--costs", action="store_true", help="then the S1 costs (speed_vs_error_costs.py)")
+    parser.add_argument("--report", action="store_true", help="then the report (speed_vs_error_report.py)")
     parser.add_argument("--output", default=os.path.join("out", "speed_vs_error"))
     args = parser.parse_args(argv)
     poses = list(pair_poses(3 if args.quick else args.poses, seed=1))
@@ -176,6 +184,12 @@ def main(argv=None):
                 run_part(shape, family, poses, args.quick, args.output)
     for row in summarize(args.output):
         print(" | ".join(str(v) for v in row.values()))
+    if args.costs:
+        subprocess.run([sys.executable, os.path.join(HERE, "speed_vs_error_costs.py"), "--output", args.output]
+                       + (["--quick"] if args.quick else []), check=True)
+    if args.report:
+        subprocess.run([sys.executable, os.path.join(HERE, "speed_vs_error_report.py"), "--input", args.output,
+                        "--output", args.output], check=True)
 
 
 if __name__ == "__main__":

@@ -27,6 +27,7 @@ sys.path.insert(0, HERE)
 from roundedmesh.export import write_csv  # noqa: E402
 from speed_vs_error import LEVEL_SETS  # noqa: E402
 
+POSES = os.path.join(HERE, os.pardir, "bench", "data", "s1_settled.csv")   # from any working folder
 NODES = (300, 554, 1100, 2200)
 REGIMES = ("auto", "quadrature", "direct")
 CLUMPS = (10, 20, 40, 80)
@@ -51,8 +52,8 @@ def measure(arguments, output, quick):
     """The row bench_s1_peers.py writes for one configuration."""
     timing = ["--warmup", "5", "--blocks", "1", "--block-steps", "5", "--min-block-seconds", "0"] if quick else []
     path = os.path.join(output, "bench.csv")
-    subprocess.run([sys.executable, os.path.join(HERE, "bench_s1_peers.py"), *arguments, *timing, "--output", path],
-                   check=True, env={**os.environ, "OMP_NUM_THREADS": "1"})
+    subprocess.run([sys.executable, os.path.join(HERE, "bench_s1_peers.py"), *arguments, *timing, "--poses", POSES,
+                    "--output", path], check=True, env={**os.environ, "OMP_NUM_THREADS": "1"})
     with open(path, newline="") as f:
         return next(csv.DictReader(f))
 

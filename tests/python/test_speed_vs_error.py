@@ -1,6 +1,6 @@
 """The error axis of the speed-against-error study (issue 14, doc/speed-vs-error.md): Hertz's reference at a smooth
 shape's contact point (roundedmesh.hertz_reference), the pressing of YADE's representations
-(roundedmesh.shape_error), and scripts/speed_vs_error.py --quick end to end."""
+(roundedmesh.shape_error), and scripts/speed_vs_error.py --quick --costs --report end to end."""
 import csv
 import math
 import os
@@ -221,8 +221,9 @@ def test_every_representation_stands_where_the_smooth_shape_does():
 # --- the script ---------------------------------------------------------------------------------------------
 
 def test_quick_study_runs_and_writes_the_table(tmp_path):
-    out = subprocess.run(["/usr/bin/python3", SCRIPT, "--quick", "--output", str(tmp_path)], capture_output=True,
-                         text=True, timeout=120, env=os.environ)
+    # the whole study in one run: errors, S1 costs (speed_vs_error_costs.py --quick) and the report
+    out = subprocess.run(["/usr/bin/python3", SCRIPT, "--quick", "--costs", "--report", "--output", str(tmp_path)],
+                         capture_output=True, text=True, timeout=180, env=os.environ)
     assert out.returncode == 0, out.stdout + out.stderr
     with open(tmp_path / "errors.csv", newline="") as f:
         rows = list(csv.DictReader(f))
@@ -238,3 +239,13 @@ def test_quick_study_runs_and_writes_the_table(tmp_path):
         if r["shape"] == "sphere" and r["family"] == "roundedmesh" and r["nodes or spheres"] == "2562":
             assert float(r["NRMSE worst [%]"]) < 0.3
     assert (tmp_path / "errors.md").read_text().count("\n") == len(rows) + 2
+    with open(tmp_path / "costs.csv", newline="") as f:
+        costs = list(csv.DictReader(f))
+    assert [c["configuration"] for c in costs] == ["curvature computed, auto", "clump", "level set, grid 2 mm"]
+    assert all(float(c["median_cpu_ms"]) > 0 for c in costs)
+    with open(tmp_path / "pareto.csv", newline="") as f:
+        timed = [r for r in csv.DictReader(f) if r["CPU ms per step"]]
+    # --quick times the first configuration of each family; the 10-sphere clump has no --quick error
+    assert {(r["configuration"], r["nodes or spheres"]) for r in timed} == {("curvature computed, auto", "300"),
+                                                                           ("level set, grid 2 mm", "255")}
+    assert (tmp_path / "guide.md").exists() and (tmp_path / "pareto.png").exists()
