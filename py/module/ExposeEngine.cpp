@@ -275,7 +275,7 @@ class Engine {
     s["rejected_through_body"] = c.narrowPhase.throughBody;
     s["quadrature_contacts"] = c.quadratureContacts;
     s["direct_contacts"] = c.directContacts;
-  s["sphere_contacts"] = c.sphereContacts;
+    s["sphere_contacts"] = c.sphereContacts;
     s["sliding_contacts"] = c.slidingContacts;
     s["neighbour_rebuilds"] = c.neighbourRebuilds;
     s["candidate_rebuilds"] = c.candidateRebuilds;
