@@ -8,6 +8,8 @@
 #include <stdexcept>
 
 #include "pkg/shape/BodyMesh.hpp"
+#include "pkg/shape/PrincipalCurvature.hpp"
+#include "pkg/shape/TriangleSurface.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -51,7 +53,9 @@ BodyMesh readMesh(const std::string& path) {
     if (!(in >> r)) malformed(path, "truncated radii");
   std::vector<Real> curvatures(radii.size());
   for (size_t t = 0; t < radii.size(); ++t) curvatures[t] = 1 / radii[t];
-  const RoundedMesh mesh(std::move(vertices), std::move(triangles), radii);
+  // The file keeps the radii only: both principal curvatures are estimated from the mesh, as for a computed one.
+  std::vector<PrincipalCurvature> principal = principalCurvatures(TriangleSurface{vertices, triangles});
+  const RoundedMesh mesh(std::move(vertices), std::move(triangles), radii, std::move(principal));
   return BodyMesh(mesh, Vector3r::Zero(), Quaternionr::Identity(),
                   {curvatures, CurvatureSource::Prescribed, *std::max_element(radii.begin(), radii.end())});
 }

@@ -1,11 +1,13 @@
 // Google Benchmark of the complete C++ contact step on scene S1 with 250 gummy bears (bench/data, recorded
 // by scripts/record_s1_scene.py), without YADE or Python, and of its two per-contact stages alone:
-//   BM_S1Step/threads/motion/skin/steps/near/friction   one RoundedMeshEngine step; motion = 0: the settled
+//   BM_S1Step/threads/motion/skin/steps/near/friction/curvature   one RoundedMeshEngine step; motion = 0: the settled
 //                              packing again and again (the lists kept between steps stay valid), 1: the recorded
 //                              steps of shaking in order, forth and back (the lists are rebuilt as the bodies move),
 //                              2: the recorded steps of the packing resting in the standing box (it rattles);
 //                              friction = 0: S1's frictionless materials, 1: mu = 0.5 and c = 10 N s/m on every
-//                              material with the tangential spring, 2: the same with the paper's viscous law
+//                              material with the tangential spring, 2: the same with the paper's viscous law;
+//                              curvature = 0: the paper's circle (mean curvature), 1: the ellipse of both principal
+//                              curvatures (estimated from the recorded mesh)
 //   BM_S1NarrowPhase           Ig2 over every pair's candidates of the settled packing (time per contact)
 //   BM_S1Load/friction         Law2, node forces and friction over its triangle contacts (time per contact)
 // Counters per step: body pairs, candidates, contacts, candidates per contact, list rebuilds, stage times.
@@ -56,6 +58,7 @@ void BM_S1Step(benchmark::State& state) {
   if (state.range(2) > 0) model.skins.candidatesMin = model.skins.candidatesMax = 1e-4 * state.range(2);
   if (state.range(3) > 0) model.skins.candidateSteps = static_cast<Real>(state.range(3));
   if (state.range(4) > 0) model.skins.nearFactor = static_cast<Real>(state.range(4));
+  if (state.range(6) == 1) model.pressure.curvature = CurvatureModel::Principal;
   ContactData data;
   data.timeStep = 1e-4;  // S1's
   if (trajectory)
@@ -95,16 +98,19 @@ void BM_S1Step(benchmark::State& state) {
   state.counters["reduction_ms"] = benchmark::Counter(1e3 * times.reduction, perStep);
   state.SetLabel(std::string(motion == 1 ? "shaking" : motion == 2 ? "resting" : "settled") + ", " +
                  std::to_string(threads) + " thread(s)" +
-                 (state.range(5) == 1 ? ", spring" : state.range(5) == 2 ? ", viscous" : ""));
+                 (state.range(5) == 1 ? ", spring" : state.range(5) == 2 ? ", viscous" : "") +
+                 (state.range(6) == 1 ? ", principal curvatures" : ""));
 }
-BENCHMARK(BM_S1Step)->ArgsProduct({{1, 2}, {0, 1, 2}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({{1, 2}, {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // With friction: the spring and the viscous law.
-BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {0}, {0}, {0}, {1, 2}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {0}, {0}, {0}, {1, 2}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+// The ellipse of both principal curvatures (issue 13), settled and resting, frictionless and with the spring.
+BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 2}, {0}, {0}, {0}, {0, 1}, {1}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // The lists' parameters (0: the model's default): a fixed skin in 1e-4 of the smaller volume-equivalent
 // radius, instead of one that follows each pair's motion; the steps a list is meant to last; the near list's
 // skin as a multiple of the candidates'.
-BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {20, 80}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {1, 2}, {0}, {5, 20, 40}, {3, 5, 10}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {20, 80}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {1, 2}, {0}, {5, 20, 40}, {3, 5, 10}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The settled packing after one step: its pairs with their candidate lists, and every pair's contacts.
 struct SettledStep {

@@ -10,6 +10,7 @@ namespace roundedmesh {
 using Real = double;
 using Vector2r = Eigen::Matrix<Real, 2, 1>;
 using Vector3r = Eigen::Matrix<Real, 3, 1>;
+using Matrix2r = Eigen::Matrix<Real, 2, 2>;
 using Matrix3r = Eigen::Matrix<Real, 3, 3>;
 using Quaternionr = Eigen::Quaternion<Real>;
 

@@ -36,9 +36,9 @@ Real deepestPossible(const RoundedMesh& a, const RoundedMesh& b) {
 
 // Ig2 of a body against a plane given in the global frame.
 void planeGeometry(const RoundedMesh& mesh, const Plane& global, const BodyState& body, const Matrix3r& toBody,
-                   const RelativeMotion& motion, const GeomOutput& out) {
+                   const RelativeMotion& motion, const GeomOutput& out, CurvatureModel curvature) {
   Ig2_RoundedMesh_Plane_PressureGeom(mesh, Plane{toBody * (global.point - body.position), toBody * global.normal},
-                                     motion, out);
+                                     motion, out, curvature);
 }
 
 AlignedBox3r ball(const Vector3r& centre, Real radius) {
@@ -85,7 +85,7 @@ Real motionBound(const Quaternionr& fromRotation, const Vector3r& fromTranslatio
 // only when it no longer covers the new one.
 void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Quaternionr& rotation,
                       const Matrix3r& matrix, const Vector3r& translation, const ListSkins& skins, Real radius,
-                      Real shallow, Real full, CandidateList& list, ContactStatistics& statistics) {
+                      Real shallow, Real full, bool circleFilter, CandidateList& list, ContactStatistics& statistics) {
   const Real bound = mesh2.sphereBoundRadius();
   auto needed = [&](Real skin) { return list.deepest > shallow ? full : 1.5 * list.deepest + 2 * skin; };
   Real skin = skins.candidatesMin * radius, depth = shallow;
@@ -115,7 +115,7 @@ void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const 
   list.age = 0;
   list.rotation = rotation;
   list.translation = translation;
-  touchableTrianglePairs(mesh1, mesh2, matrix, translation, skin, depth, list.near, list.pairs);
+  touchableTrianglePairs(mesh1, mesh2, matrix, translation, skin, depth, list.near, list.pairs, circleFilter);
   ++statistics.candidateRebuilds;
 }
 
@@ -128,6 +128,7 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
   const Matrix3r toBody = s1.orientation.toRotationMatrix().transpose();
   auto local = [&](const Vector3r& x) -> Vector3r { return toBody * (x - s1.position); };
   const GeomOutput out(geoms, &statistics.narrowPhase);
+  const CurvatureModel curvature = model.pressure.curvature;
   const int bodyCount = static_cast<int>(model.bodies.size());
   if (pair.other < bodyCount) {
     const BodyState& s2 = data.bodyStates[pair.other];
@@ -149,11 +150,12 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
     };
     for (int pass = 0;; ++pass) {
       updateCandidates(*body.mesh, *other.mesh, rotation, matrix, translation, model.skins, smaller, shallow,
-                       list.deepest > shallow ? fullDepth() : shallow, list, statistics);
+                       list.deepest > shallow ? fullDepth() : shallow, curvature == CurvatureModel::Mean, list,
+                       statistics);
       NarrowPhaseCounts counts;
       geoms.clear();
       Ig2_RoundedMesh_RoundedMesh_PressureGeom(*body.mesh, *other.mesh, matrix, translation, list.pairs, shallow,
-                                               motion, GeomOutput(geoms, &counts));
+                                               motion, GeomOutput(geoms, &counts), curvature);
       list.deepest = 0;
       for (const PressureGeom& geom : geoms) list.deepest = std::max(list.deepest, geom.effectiveOverlap);
       const bool complete =
@@ -168,19 +170,22 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
   const PartnerShape& shape = model.partners[pair.other - bodyCount].shape;
   std::visit(Overloaded{[&](const Box& box) {
                           Ig2_RoundedMesh_Box_PressureGeom(*body.mesh, box, local(s2.position),
-                                                           toBody * s2.orientation.toRotationMatrix(), motion, out);
+                                                           toBody * s2.orientation.toRotationMatrix(), motion, out,
+                                                           curvature);
                         },
                         [&](const Facet& facet) {
                           std::array<Vector3r, 3> corners = facetCorners(facet, s2.position, s2.orientation);
                           for (Vector3r& x : corners) x = local(x);
-                          Ig2_RoundedMesh_Facet_PressureGeom(*body.mesh, corners, motion, out);
+                          Ig2_RoundedMesh_Facet_PressureGeom(*body.mesh, corners, motion, out, curvature);
                         },
                         [&](const Sphere& sphere) {
-                          Ig2_RoundedMesh_Sphere_PressureGeom(*body.mesh, sphere, local(s2.position), motion, out);
+                          Ig2_RoundedMesh_Sphere_PressureGeom(*body.mesh, sphere, local(s2.position), motion, out,
+                                                              curvature);
                         },
-                        [&](const Plane& plane) { planeGeometry(*body.mesh, plane, s1, toBody, motion, out); },
+                        [&](const Plane& plane) { planeGeometry(*body.mesh, plane, s1, toBody, motion, out, curvature); },
                         [&](const Wall& wall) {
-                          planeGeometry(*body.mesh, wallPlane(wall, s2.position, s1.position), s1, toBody, motion, out);
+                          planeGeometry(*body.mesh, wallPlane(wall, s2.position, s1.position), s1, toBody, motion, out,
+                                        curvature);
                         }},
              shape);
 }

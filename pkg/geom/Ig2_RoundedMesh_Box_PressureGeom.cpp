@@ -7,7 +7,7 @@ namespace roundedmesh {
 
 void Ig2_RoundedMesh_Box_PressureGeom(const RoundedMesh& mesh, const Box& box, const Vector3r& centre,
                                       const Matrix3r& orientation, const RelativeMotion& motion,
-                                      GeomOutput out) {
+                                      GeomOutput out, CurvatureModel model) {
   // Face f = 2 * axis + (outward normal along -axis ? 1 : 0); t1 x t2 = n12 = -outward normal.
   std::array<ContactFace, 6> faces;
   std::array<ConvexPolygon, 6> outlines;
@@ -39,13 +39,13 @@ void Ig2_RoundedMesh_Box_PressureGeom(const RoundedMesh& mesh, const Box& box, c
       const Real height = (f % 2 ? -local[axis] : local[axis]) - box.halfExtents[axis];
       if (height > 0) {
         outside = true;
-        out.add(trianglePlaneGeom(mesh, t, faces[f], motion, geom), geom);
+        out.add(trianglePlaneGeom(mesh, t, faces[f], motion, geom, model), geom);
       } else if (height > nearestHeight) {
         nearestHeight = height;
         nearestFace = f;
       }
     }
-    if (!outside) out.add(trianglePlaneGeom(mesh, t, faces[nearestFace], motion, geom), geom);
+    if (!outside) out.add(trianglePlaneGeom(mesh, t, faces[nearestFace], motion, geom, model), geom);
   });
 }
 

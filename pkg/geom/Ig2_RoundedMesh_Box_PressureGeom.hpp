@@ -15,6 +15,6 @@ namespace roundedmesh {
 
 void Ig2_RoundedMesh_Box_PressureGeom(const RoundedMesh& mesh, const Box& box, const Vector3r& centre,
                                       const Matrix3r& orientation, const RelativeMotion& motion,
-                                      GeomOutput out);
+                                      GeomOutput out, CurvatureModel model = CurvatureModel::Mean);
 
 }  // namespace roundedmesh

@@ -3,7 +3,7 @@
 namespace roundedmesh {
 
 void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::array<Vector3r, 3>& corners,
-                                        const RelativeMotion& motion, GeomOutput out) {
+                                        const RelativeMotion& motion, GeomOutput out, CurvatureModel model) {
   const Vector3r normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
   ContactFace face;
   face.origin = corners[0];
@@ -24,7 +24,7 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::arra
   }
   PressureGeom geom;
   mesh.tree().query([&](const AlignedBox3r& b) { return b.intersects(box); }, [&](int t) {
-    out.add(trianglePlaneGeom(mesh, t, face, motion, geom), geom);
+    out.add(trianglePlaneGeom(mesh, t, face, motion, geom, model), geom);
   });
 }
 

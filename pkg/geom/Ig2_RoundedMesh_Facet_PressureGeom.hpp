@@ -16,6 +16,6 @@
 namespace roundedmesh {
 
 void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::array<Vector3r, 3>& corners,
-                                        const RelativeMotion& motion, GeomOutput out);
+                                        const RelativeMotion& motion, GeomOutput out, CurvatureModel model = CurvatureModel::Mean);
 
 }  // namespace roundedmesh

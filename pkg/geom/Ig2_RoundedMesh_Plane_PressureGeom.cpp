@@ -3,7 +3,7 @@
 namespace roundedmesh {
 
 void Ig2_RoundedMesh_Plane_PressureGeom(const RoundedMesh& mesh, const Plane& plane, const RelativeMotion& motion,
-                                        GeomOutput out) {
+                                        GeomOutput out, CurvatureModel model) {
   ContactFace face;
   face.origin = plane.point;
   face.normal = -plane.normal;
@@ -15,7 +15,7 @@ void Ig2_RoundedMesh_Plane_PressureGeom(const RoundedMesh& mesh, const Plane& pl
   };
   PressureGeom geom;
   mesh.tree().query(reachesPlane, [&](int t) {
-    out.add(trianglePlaneGeom(mesh, t, face, motion, geom), geom);
+    out.add(trianglePlaneGeom(mesh, t, face, motion, geom, model), geom);
   });
 }
 

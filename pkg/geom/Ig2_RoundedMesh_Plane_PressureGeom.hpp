@@ -12,6 +12,6 @@
 namespace roundedmesh {
 
 void Ig2_RoundedMesh_Plane_PressureGeom(const RoundedMesh& mesh, const Plane& plane, const RelativeMotion& motion,
-                                        GeomOutput out);
+                                        GeomOutput out, CurvatureModel model = CurvatureModel::Mean);
 
 }  // namespace roundedmesh

@@ -16,6 +16,6 @@ namespace roundedmesh {
 void Ig2_RoundedMesh_RoundedMesh_PressureGeom(const RoundedMesh& mesh1, const RoundedMesh& mesh2,
                                               const Matrix3r& rotation, const Vector3r& translation,
                                               const std::vector<TrianglePair>& candidates, Real shallow,
-                                              const RelativeMotion& motion, GeomOutput out);
+                                              const RelativeMotion& motion, GeomOutput out, CurvatureModel model = CurvatureModel::Mean);
 
 }  // namespace roundedmesh

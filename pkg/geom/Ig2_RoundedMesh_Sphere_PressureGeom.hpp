@@ -11,6 +11,6 @@
 namespace roundedmesh {
 
 void Ig2_RoundedMesh_Sphere_PressureGeom(const RoundedMesh& mesh, const Sphere& sphere, const Vector3r& centre,
-                                         const RelativeMotion& motion, GeomOutput out);
+                                         const RelativeMotion& motion, GeomOutput out, CurvatureModel model = CurvatureModel::Mean);
 
 }  // namespace roundedmesh

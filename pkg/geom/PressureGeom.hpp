@@ -1,6 +1,9 @@
 // IGeom of one rounded triangle of body 1 against a partner (Section 2.3, Appendix B), in the frame of
 // body 1. The contact plane has origin c (centre of the contact circle), unit normal n12 pointing from
 // body 1 to body 2, and in-plane axes t1, t2 with t1 x t2 = n12; plane coordinates are taken relative to c.
+// An elliptical contact (EllipticalContact.hpp) also carries the map y = T (x - x*) that takes its ellipse to
+// a circle of radius contactRadius; radius and sphereOverlap are then those for which Eq. 9 on that circle is
+// Hertz's elliptical pressure.
 #pragma once
 
 #include <array>
@@ -26,7 +29,22 @@ struct PressureGeom {
   Vector2r effectivePoint;       // c_eff: the point of S closest to c
   Real effectiveOverlap;         // delta_eff (Eq. B.4) [m]
   Vector3r slip;                 // tangential velocity of body 2 relative to body 1 at c_eff [m/s]
+  bool elliptical = false;       // curvature='principal': the pressure is Hertz's elliptical one
+  Vector2r ellipseCentre = Vector2r::Zero();     // x*, in plane coordinates [m]
+  Matrix2r toCircle = Matrix2r::Identity();      // T, det T = 1
 };
+
+// How a contact's curvature is modelled: the paper's one mean radius per triangle (a circle), or both principal
+// curvatures (an ellipse; EllipticalContact.hpp).
+enum class CurvatureModel { Mean, Principal };
+
+// S where the pressure is circular, about its centre: T (x - x*) for an elliptical contact, S itself otherwise.
+inline ConvexPolygon circlePolygon(const PressureGeom& geom) {
+  if (!geom.elliptical) return geom.polygon;
+  ConvexPolygon mapped;
+  for (int i = 0; i < geom.polygon.size(); ++i) mapped.push(geom.toCircle * (geom.polygon[i] - geom.ellipseCentre));
+  return mapped;
+}
 
 // How the narrow phase of one candidate ended: a contact, or the first of its tests (Appendix B, in the order
 // they run, then the deep-contact criterion of DeepContactCriterion.hpp) that rejected it. Converts to true for a contact.

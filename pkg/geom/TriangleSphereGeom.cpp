@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pkg/geom/EllipticalContact.hpp"
+
 namespace roundedmesh {
 namespace {
 
@@ -22,6 +24,10 @@ struct GivenSphere {
   int triangle() const { return sphere.triangle; }
   Vector3r normal() const { return sphere.normal; }
   const Vector3r& corner(int i) const { return sphere.corners[i]; }
+  CapCurvature cap(const PressureGeom& geom) const {
+    return sphere.mesh ? triangleCap(*sphere.mesh, sphere.triangle, geom, sphere.rotation, sphere.translation)
+                       : exactCap(1 / sphere.radius);
+  }
 };
 
 // The partner as a triangle of body 2's mesh, each piece moved into body 1's frame when first asked for.
@@ -35,6 +41,9 @@ struct MovedTriangle {
   Vector3r corner(int i) const {
     return placed.rotation * placed.mesh.vertices()[placed.mesh.triangles()[placed.triangle][i]] + placed.translation;
   }
+  CapCurvature cap(const PressureGeom& geom) const {
+    return triangleCap(placed.mesh, placed.triangle, geom, placed.rotation, placed.translation);
+  }
 
   const PlacedTriangle placed;
   const RoundedTriangle& rounded;
@@ -43,7 +52,7 @@ struct MovedTriangle {
 
 template <class Partner>
 GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partner, const RelativeMotion& motion,
-                    PressureGeom& geom) {
+                    PressureGeom& geom, CurvatureModel model) {
   const RoundedTriangle& rounded = mesh.rounded(triangle);
   const Vector3r d = partner.centre() - rounded.sphereCentre;
   const bool isTriangle = partner.triangle() >= 0;
@@ -58,7 +67,9 @@ GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partne
   const Real a = std::sqrt(overlap * R);
   // (d - R2)(d + R2) rather than d^2 - R2^2: no cancellation when R2 is huge (a nearly flat triangle).
   const Vector3r c = rounded.sphereCentre + ((distance - R2) * (distance + R2) + R1 * R1) / (2 * distance) * n;
-  if (missesContactCircle(rounded.circumcentre, rounded.circumradius, c, n, a)) return {Rejection::OutsideCircle};
+  const bool elliptical = model == CurvatureModel::Principal;
+  if (!elliptical && missesContactCircle(rounded.circumcentre, rounded.circumradius, c, n, a))
+    return {Rejection::OutsideCircle};
 
   geom.tangent1 = n.unitOrthogonal();
   geom.tangent2 = n.cross(geom.tangent1);
@@ -73,10 +84,6 @@ GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partne
   }
   if (geom.polygon.empty()) return {Rejection::EmptyPolygon};
 
-  geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
-  const Real hSq = geom.effectivePoint.squaredNorm();
-  if (!(hSq < a * a)) return {Rejection::BeyondContactCircle};
-
   geom.triangle = triangle;
   geom.partnerTriangle = partner.triangle();
   geom.centre = c;
@@ -84,8 +91,18 @@ GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partne
   geom.radius = R;
   geom.sphereOverlap = overlap;
   geom.contactRadius = a;
-  geom.effectiveOverlap = overlap - R1 - R2 + std::sqrt(std::max(R1 * R1 - hSq, Real(0))) +
-                          std::sqrt(std::max(R2 * R2 - hSq, Real(0)));
+  geom.elliptical = false;
+  if (elliptical) {
+    const GeomTest ellipse = ellipticalContact(geom, triangleCap(mesh, triangle, geom), partner.cap(geom));
+    if (!ellipse) return ellipse;
+  }
+  if (!geom.elliptical) {
+    geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
+    const Real hSq = geom.effectivePoint.squaredNorm();
+    if (!(hSq < a * a)) return {Rejection::BeyondContactCircle};
+    geom.effectiveOverlap = overlap - R1 - R2 + std::sqrt(std::max(R1 * R1 - hSq, Real(0))) +
+                            std::sqrt(std::max(R2 * R2 - hSq, Real(0)));
+  }
   setRelativeVelocity(geom, motion);
   return {Rejection::None};
 }
@@ -100,17 +117,20 @@ ContactSphere contactSphere(const RoundedMesh& mesh2, int t, const Matrix3r& rot
   sphere.triangle = t;
   sphere.normal = moved.normal();
   for (int i = 0; i < 3; ++i) sphere.corners[i] = moved.corner(i);
+  sphere.mesh = &mesh2;
+  sphere.rotation = rotation;
+  sphere.translation = translation;
   return sphere;
 }
 
 GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const ContactSphere& sphere,
-                            const RelativeMotion& motion, PressureGeom& geom) {
-  return sphereGeom(mesh, triangle, GivenSphere{sphere}, motion, geom);
+                            const RelativeMotion& motion, PressureGeom& geom, CurvatureModel model) {
+  return sphereGeom(mesh, triangle, GivenSphere{sphere}, motion, geom, model);
 }
 
 GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const PlacedTriangle& partner,
-                            const RelativeMotion& motion, PressureGeom& geom) {
-  return sphereGeom(mesh, triangle, MovedTriangle(partner), motion, geom);
+                            const RelativeMotion& motion, PressureGeom& geom, CurvatureModel model) {
+  return sphereGeom(mesh, triangle, MovedTriangle(partner), motion, geom, model);
 }
 
 }  // namespace roundedmesh

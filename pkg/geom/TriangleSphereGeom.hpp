@@ -29,6 +29,9 @@ struct ContactSphere {
   int triangle = -1;                   // -1: a whole sphere, no facing check, S = P'
   Vector3r normal = Vector3r::Zero();  // the triangle's outward normal
   std::array<Vector3r, 3> corners;     // the triangle's corners, in body 2's mesh order
+  const RoundedMesh* mesh = nullptr;   // for a triangle: body 2's mesh, placed by rotation and translation
+  Matrix3r rotation = Matrix3r::Identity();
+  Vector3r translation = Vector3r::Zero();
 };
 
 // Body 2's rounded triangle t, moved into body 1's frame by x1 = rotation * x2 + translation.
@@ -44,9 +47,12 @@ struct PlacedTriangle {
   const Vector3r& translation;
 };
 
+// With CurvatureModel::Principal the circle tests give way to the ellipse of EllipticalContact.hpp.
 GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const ContactSphere& sphere,
-                            const RelativeMotion& motion, PressureGeom& geom);
+                            const RelativeMotion& motion, PressureGeom& geom,
+                            CurvatureModel model = CurvatureModel::Mean);
 GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const PlacedTriangle& partner,
-                            const RelativeMotion& motion, PressureGeom& geom);
+                            const RelativeMotion& motion, PressureGeom& geom,
+                            CurvatureModel model = CurvatureModel::Mean);
 
 }  // namespace roundedmesh

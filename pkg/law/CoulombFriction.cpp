@@ -7,7 +7,7 @@ namespace roundedmesh {
 
 Real circleFraction(const PressureGeom& geom) {
   const Real a = geom.contactRadius;
-  return circlePolygonArea(a, geom.polygon) / (M_PI * a * a);
+  return circlePolygonArea(a, circlePolygon(geom)) / (M_PI * a * a);
 }
 
 TangentialLoad coulombFriction(const PressureGeom& geom, const NormalLoad& load, const HertzPhys& phys, Real share) {

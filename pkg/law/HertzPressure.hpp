@@ -1,11 +1,13 @@
 // Hertz contact pressure with normal damping over a contact circle of radius a (Eq. 9), in the form whose
 // integral over the circle is exactly the damped Hertz force of Eq. 7:
-//   p(r) = (2 E* / pi) (1/R* + A ddelta/dt / a^2) sqrt(a^2 - r^2),   r < a
+//   p(r) = (2 E* / (pi R*)) (1 + A ddelta/dt / delta) sqrt(a^2 - r^2),   r < a,  a^2 = delta R* (Eq. 5)
 //   integral over the circle = (4/3) E* sqrt(R*) (delta^3/2 + A ddelta/dt delta^1/2)   (Eq. 7)
 // The paper prints the damping term with 3 A instead of 2 A (Eq. 8), which integrates to 1.5 times the
 // damping force of Eq. 7; doc/physics.md explains the choice. The pressure never pulls: a negative
 // amplitude (fast separation) is clamped to zero. The elastic part, (2 E* / (pi R*)) sqrt(a^2 - r^2), is the
-// pressure at ddelta/dt = 0: what the contact's elastic energy is computed from.
+// pressure at ddelta/dt = 0: what the contact's elastic energy is computed from. Written with delta rather than
+// a^2 / R*, the damping keeps Eq. 7's ratio A ddelta/dt / delta to the elastic force on an elliptical contact too,
+// whose circle (PressureGeom::toCircle) has a^2 != delta R*.
 #pragma once
 
 #include <algorithm>
@@ -30,10 +32,9 @@ struct HertzPressure {
 };
 
 inline HertzPressure hertzPressure(const PressureGeom& geom, const HertzPhys& phys) {
-  const Real aSq = geom.contactRadius * geom.contactRadius;
-  const Real amplitude =
-      2 * phys.effectiveModulus / M_PI * (1 / geom.radius + phys.damping * geom.overlapRate / aSq);
-  return {std::max(amplitude, Real(0)), aSq, 2 * phys.effectiveModulus / (M_PI * geom.radius)};
+  const Real elastic = 2 * phys.effectiveModulus / (M_PI * geom.radius);
+  const Real amplitude = elastic * (1 + phys.damping * geom.overlapRate / geom.sphereOverlap);
+  return {std::max(amplitude, Real(0)), geom.contactRadius * geom.contactRadius, elastic};
 }
 
 }  // namespace roundedmesh

@@ -12,15 +12,15 @@ namespace {
 // r x n12 for r = (x, y) in plane coordinates with t1 x t2 = n12.
 Vector2r leverTimesNormal(const Vector2r& r) { return Vector2r(r.y(), -r.x()); }
 
-bool useDirectRegime(const PressureGeom& geom, const PressureOptions& options) {
+bool useDirectRegime(const ConvexPolygon& s, Real a, const PressureOptions& options) {
   switch (options.regime) {
     case RegimeChoice::Quadrature: return false;
     case RegimeChoice::Direct: return true;
     case RegimeChoice::Auto: break;
   }
-  const int subTriangles = geom.polygon.size() - 2;
-  const Real areaPerPoint = geom.polygon.area() / (subTriangles * static_cast<Real>(kDunavant8.size()));
-  return M_PI * geom.contactRadius * geom.contactRadius < options.gamma * areaPerPoint;
+  const int subTriangles = s.size() - 2;
+  const Real areaPerPoint = s.area() / (subTriangles * static_cast<Real>(kDunavant8.size()));
+  return M_PI * a * a < options.gamma * areaPerPoint;
 }
 
 // S clipped to the square [-a, a]^2 around c; S itself when it lies in the square already (clipping would
@@ -33,12 +33,12 @@ ConvexPolygon clippedToSquare(const ConvexPolygon& polygon, Real a) {
 }
 
 // The pressure's shape sqrt(a^2 - r^2) is integrated once; the amplitudes, damped and elastic, scale it.
-NormalLoad integrateByQuadrature(const PressureGeom& geom, const HertzPressure& pressure) {
+NormalLoad integrateByQuadrature(const ConvexPolygon& polygon, const HertzPressure& pressure) {
   Real integral = 0;
   Vector2r moment = Vector2r::Zero();
   // The pressure is zero outside the circle: integrating over S clipped to the circle's square gives the same
   // integral with every quadrature point where the pressure is.
-  const ConvexPolygon s = clippedToSquare(geom.polygon, geom.contactRadius);
+  const ConvexPolygon s = clippedToSquare(polygon, std::sqrt(pressure.contactRadiusSq));
   const QuadratureColumns& q = dunavant8Columns();
   for (int j = 1; j + 1 < s.size(); ++j) {
     const Vector2r &p0 = s[0], &p1 = s[j], &p2 = s[j + 1];
@@ -54,11 +54,18 @@ NormalLoad integrateByQuadrature(const PressureGeom& geom, const HertzPressure& 
           pressure.elasticAmplitude * integral};
 }
 
-NormalLoad applyDirectly(const PressureGeom& geom, const HertzPressure& pressure) {
-  const Real fraction = circlePolygonArea(geom.contactRadius, geom.polygon) / (M_PI * pressure.contactRadiusSq);
+NormalLoad applyDirectly(const ConvexPolygon& polygon, const Vector2r& effectivePoint, const HertzPressure& pressure) {
+  const Real fraction = circlePolygonArea(std::sqrt(pressure.contactRadiusSq), polygon) / (M_PI * pressure.contactRadiusSq);
   const Real integral = pressure.circleIntegral() * fraction;
   const Real force = pressure.amplitude * integral;
-  return {force, force * leverTimesNormal(geom.effectivePoint), Regime::Direct, pressure.elasticAmplitude * integral};
+  return {force, force * leverTimesNormal(effectivePoint), Regime::Direct, pressure.elasticAmplitude * integral};
+}
+
+NormalLoad integrate(const ConvexPolygon& polygon, const Vector2r& effectivePoint, const HertzPressure& pressure,
+                     const PressureOptions& options) {
+  return useDirectRegime(polygon, std::sqrt(pressure.contactRadiusSq), options)
+             ? applyDirectly(polygon, effectivePoint, pressure)
+             : integrateByQuadrature(polygon, pressure);
 }
 
 }  // namespace
@@ -66,7 +73,13 @@ NormalLoad applyDirectly(const PressureGeom& geom, const HertzPressure& pressure
 NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& geom, const HertzPhys& phys,
                                                           const PressureOptions& options) {
   const HertzPressure pressure = hertzPressure(geom, phys);
-  return useDirectRegime(geom, options) ? applyDirectly(geom, pressure) : integrateByQuadrature(geom, pressure);
+  if (!geom.elliptical) return integrate(geom.polygon, geom.effectivePoint, pressure, options);
+  // On T(S) the moment is (leverTimesNormal of) the first moment in y; in the plane x = x* + T^-1 y.
+  NormalLoad load = integrate(circlePolygon(geom), geom.toCircle * (geom.effectivePoint - geom.ellipseCentre),
+                              pressure, options);
+  const Vector2r firstMoment(-load.moment.y(), load.moment.x());
+  load.moment = leverTimesNormal(load.force * geom.ellipseCentre + geom.toCircle.inverse() * firstMoment);
+  return load;
 }
 
 }  // namespace roundedmesh

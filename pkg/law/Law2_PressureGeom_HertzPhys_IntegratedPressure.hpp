@@ -4,7 +4,8 @@
 //   direct regime (Eq. 14, when pi a^2 < gamma A_S / (N_S N_Q)): the whole-circle force of Eq. 7 scaled by
 //   the exact area fraction A(S n Omega) / A(Omega), acting at c_eff.
 // A_S / (N_S N_Q) is the mean area per quadrature point over S's N_S fan triangles; for a triangular S
-// it is the paper's A_j / N_Q.
+// it is the paper's A_j / N_Q. An elliptical contact is integrated the same way over T(S), where its pressure is
+// circular (PressureGeom.hpp); areas are kept, and the moment is mapped back to the plane.
 #pragma once
 
 #include "pkg/geom/PressureGeom.hpp"
@@ -18,6 +19,7 @@ enum class RegimeChoice { Auto, Quadrature, Direct };
 struct PressureOptions {
   Real gamma = 10;  // expected number of quadrature points inside the contact circle (Eq. 14)
   RegimeChoice regime = RegimeChoice::Auto;
+  CurvatureModel curvature = CurvatureModel::Mean;  // circle (the paper) or ellipse (EllipticalContact.hpp)
 };
 
 struct NormalLoad {

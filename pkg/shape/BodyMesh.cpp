@@ -27,7 +27,7 @@ std::vector<Real> inverse(const std::vector<Real>& values) {
 Real defaultMaxRadius(Real volume) { return 100 * std::cbrt(3 * volume / (4 * M_PI)); }
 
 BodyMesh::BodyMesh(const TriangleSurface& surface, const std::optional<std::vector<Real>>& prescribedCurvatures,
-                   std::optional<Real> maxRadius) {
+                   std::optional<Real> maxRadius, std::optional<std::vector<PrincipalCurvature>> prescribedPrincipal) {
   const MassProperties mass = solidMassProperties(surface.vertices, surface.triangles);
   if (prescribedCurvatures && prescribedCurvatures->size() != surface.triangles.size())
     throw std::invalid_argument("curvature: " + std::to_string(prescribedCurvatures->size()) + " values given for " +
@@ -35,9 +35,18 @@ BodyMesh::BodyMesh(const TriangleSurface& surface, const std::optional<std::vect
   curvature_.source = prescribedCurvatures ? CurvatureSource::Prescribed : CurvatureSource::Computed;
   curvature_.meanCurvatures = prescribedCurvatures ? *prescribedCurvatures : meanCurvature(surface).triangles;
   curvature_.maxRadius = maxRadius.value_or(defaultMaxRadius(mass.volume));
-  placeInPrincipalFrame(
-      RoundedMesh(surface.vertices, surface.triangles, contactRadii(curvature_.meanCurvatures, curvature_.maxRadius)),
-      mass);
+  std::vector<PrincipalCurvature> principal;
+  if (prescribedPrincipal) {
+    principal = std::move(*prescribedPrincipal);
+  } else if (prescribedCurvatures) {
+    for (std::size_t t = 0; t < surface.triangles.size(); ++t)
+      principal.push_back(PrincipalCurvature::isotropic((*prescribedCurvatures)[t], Vector3r::UnitZ()));
+  } else {
+    principal = principalCurvatures(surface);
+  }
+  placeInPrincipalFrame(RoundedMesh(surface.vertices, surface.triangles,
+                                    contactRadii(curvature_.meanCurvatures, curvature_.maxRadius), std::move(principal)),
+                        mass);
 }
 
 BodyMesh::BodyMesh(const RoundedMesh& inputFrameMesh) {

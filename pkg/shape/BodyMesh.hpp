@@ -35,8 +35,11 @@ class BodyMesh {
  public:
   // A body from a valid, outward surface: with the mean curvatures given (prescribed), or computed from the
   // mesh by Eq. 1 (Curvature.hpp) when prescribedCurvatures is empty; maxRadius defaults to defaultMaxRadius.
+  // Principal curvatures (PrincipalCurvature.hpp): those given, else, with prescribed mean curvatures H, both
+  // equal to H, else computed from the mesh (Rusinkiewicz's estimate).
   BodyMesh(const TriangleSurface& inputFrameSurface, const std::optional<std::vector<Real>>& prescribedCurvatures,
-           std::optional<Real> maxRadius = std::nullopt);
+           std::optional<Real> maxRadius = std::nullopt,
+           std::optional<std::vector<PrincipalCurvature>> prescribedPrincipal = std::nullopt);
   // A body whose radii are given: prescribed curvature 1/R.
   explicit BodyMesh(const RoundedMesh& inputFrameMesh);
   // Restores a mesh that is already in its principal frame (as saved with a scene), without moving it;

@@ -112,14 +112,33 @@ TriangleSurface cylinderSurface(Real radius, Real length, int nodes) {
   return s;
 }
 
+namespace {
+
+Vector3r triangleNormal(const TriangleSurface& surface, const Triangle& t) {
+  return (surface.vertices[t[1]] - surface.vertices[t[0]]).cross(surface.vertices[t[2]] - surface.vertices[t[0]]).normalized();
+}
+
+bool onCap(const Vector3r& normal) { return std::abs(normal.z()) > 0.5; }
+
+}  // namespace
+
 std::vector<Real> cylinderTriangleCurvatures(Real radius, const TriangleSurface& surface) {
   std::vector<Real> curvatures;
   curvatures.reserve(surface.triangles.size());
-  for (const Triangle& t : surface.triangles) {
-    const Vector3r n = (surface.vertices[t[1]] - surface.vertices[t[0]]).cross(surface.vertices[t[2]] - surface.vertices[t[0]]);
-    curvatures.push_back(std::abs(n.normalized().z()) > 0.5 ? 0 : 1 / (2 * radius));
-  }
+  for (const Triangle& t : surface.triangles) curvatures.push_back(onCap(triangleNormal(surface, t)) ? 0 : 1 / (2 * radius));
   return curvatures;
+}
+
+std::vector<PrincipalCurvature> cylinderTrianglePrincipalCurvatures(Real radius, const TriangleSurface& surface) {
+  std::vector<PrincipalCurvature> out;
+  out.reserve(surface.triangles.size());
+  for (const Triangle& t : surface.triangles) {
+    const Vector3r n = triangleNormal(surface, t);
+    const Vector3r around = Vector3r::UnitZ().cross(n);
+    out.push_back(onCap(n) ? PrincipalCurvature::isotropic(0, n)
+                           : principalCurvature(around * around.transpose() / (radius * around.squaredNorm()), n, n));
+  }
+  return out;
 }
 
 }  // namespace roundedmesh

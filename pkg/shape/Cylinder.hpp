@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "pkg/shape/PrincipalCurvature.hpp"
 #include "pkg/shape/TriangleSurface.hpp"
 
 namespace roundedmesh {
@@ -15,5 +16,8 @@ namespace roundedmesh {
 TriangleSurface cylinderSurface(Real radius, Real length, int nodes);
 
 std::vector<Real> cylinderTriangleCurvatures(Real radius, const TriangleSurface& surface);
+
+// Principal curvatures per triangle: 1/R around the hull (direction z x n) and 0 along the axis; 0 on the caps.
+std::vector<PrincipalCurvature> cylinderTrianglePrincipalCurvatures(Real radius, const TriangleSurface& surface);
 
 }  // namespace roundedmesh

@@ -29,13 +29,23 @@ Vector3r circumcentre(const Vector3r& a, const Vector3r& b, const Vector3r& c) {
 }  // namespace
 
 RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> triangles,
-                         const std::vector<Real>& radii)
-    : vertices_(std::move(vertices)), triangles_(std::move(triangles)) {
+                         const std::vector<Real>& radii, std::vector<PrincipalCurvature> principal)
+    : vertices_(std::move(vertices)), triangles_(std::move(triangles)), principal_(std::move(principal)) {
   if (vertices_.empty()) reject("vertices: the mesh has no vertices");
   if (triangles_.empty()) reject("triangles: the mesh has no triangles");
   if (radii.size() != triangles_.size())
     reject("radii: " + std::to_string(radii.size()) + " radii given for " + std::to_string(triangles_.size()) +
            " triangles");
+  if (!principal_.empty() && principal_.size() != triangles_.size())
+    reject("principal curvatures: " + std::to_string(principal_.size()) + " given for " +
+           std::to_string(triangles_.size()) + " triangles");
+  for (std::size_t t = 0; t < principal_.size(); ++t) {
+    const PrincipalCurvature& k = principal_[t];
+    if (!(std::isfinite(k.k1) && std::isfinite(k.k2) && k.k1 >= k.k2 && k.d1.allFinite() &&
+          std::abs(k.d1.norm() - 1) < 1e-6))
+      reject("principal curvatures of triangle " + std::to_string(t) +
+             " must be finite, k1 >= k2, with a unit direction");
+  }
   const int vertexCount = static_cast<int>(vertices_.size());
   for (int v = 0; v < vertexCount; ++v)
     if (!vertices_[v].allFinite()) reject("vertices: vertex " + std::to_string(v) + " is not finite");
@@ -78,6 +88,8 @@ RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> t
                                                                r.circumcentre.norm() + r.circumradius));
   }
   tree_ = TriangleTree(std::move(boxes));
+  if (principal_.empty())
+    for (const RoundedTriangle& r : rounded_) principal_.push_back(PrincipalCurvature::isotropic(1 / r.radius, r.normal));
 }
 
 const SolidDistance& RoundedMesh::solidDistance() const {
@@ -104,7 +116,9 @@ RoundedMesh RoundedMesh::transformed(const Matrix3r& rotation, const Vector3r& t
   std::vector<Vector3r> moved(vertices_.size());
   std::transform(vertices_.begin(), vertices_.end(), moved.begin(),
                  [&](const Vector3r& v) { return Vector3r(rotation * v + translation); });
-  return RoundedMesh(std::move(moved), triangles_, radii());
+  std::vector<PrincipalCurvature> principal = principal_;
+  for (PrincipalCurvature& k : principal) k.d1 = rotation * k.d1;
+  return RoundedMesh(std::move(moved), triangles_, radii(), std::move(principal));
 }
 
 }  // namespace roundedmesh

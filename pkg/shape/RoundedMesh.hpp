@@ -4,7 +4,9 @@
 // only reads it.
 // Inputs: vertices [m], triangles (corner indices, counter-clockwise seen from outside), one radius per
 // triangle [m]. A radius smaller than the triangle's circumradius is raised to the circumradius (no
-// sphere through the corners is smaller); radii() reports the radius actually used.
+// sphere through the corners is smaller); radii() reports the radius actually used. Optionally both principal
+// curvatures per triangle (PrincipalCurvature.hpp), for the elliptical contact; without them each triangle is
+// taken as isotropic with curvature 1/R.
 #pragma once
 
 #include <array>
@@ -14,6 +16,7 @@
 
 #include "pkg/bound/TriangleTree.hpp"
 #include "pkg/common/Types.hpp"
+#include "pkg/shape/PrincipalCurvature.hpp"
 #include "pkg/shape/SolidDistance.hpp"
 
 namespace roundedmesh {
@@ -33,13 +36,16 @@ struct RoundedTriangle {
 class RoundedMesh {
  public:
   // Throws std::invalid_argument naming the offending vertex, triangle or radius.
-  RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> triangles, const std::vector<Real>& radii);
+  RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> triangles, const std::vector<Real>& radii,
+              std::vector<PrincipalCurvature> principal = {});
 
   const std::vector<Vector3r>& vertices() const { return vertices_; }
   const std::vector<Triangle>& triangles() const { return triangles_; }
   const RoundedTriangle& rounded(int t) const { return rounded_[t]; }
   int triangleCount() const { return static_cast<int>(triangles_.size()); }
   std::vector<Real> radii() const;
+  const PrincipalCurvature& principal(int t) const { return principal_[t]; }
+  const std::vector<PrincipalCurvature>& principalCurvatures() const { return principal_; }
   // Radius of the ball around the body-frame origin that holds every triangle's cap (the part of its
   // encompassing sphere beyond the triangle's plane, where all contact pressure acts): no partner outside
   // it can touch the body. Bounded even for the huge radii of nearly flat triangles.
@@ -58,6 +64,7 @@ class RoundedMesh {
   std::vector<Vector3r> vertices_;
   std::vector<Triangle> triangles_;
   std::vector<RoundedTriangle> rounded_;
+  std::vector<PrincipalCurvature> principal_;
   Real sphereBoundRadius_ = 0;
   Real maxCapHeight_ = 0;
   TriangleTree tree_;

@@ -27,15 +27,42 @@ Real spheroidMeanCurvature(Real a, Real b, const Vector3r& x) {
   return (a2 + 2 * b2 - x.squaredNorm()) / (2 * a2 * b2 * b2 * std::pow(q, 1.5));
 }
 
-std::vector<Real> spheroidTriangleCurvatures(Real a, Real b, const TriangleSurface& surface) {
+namespace {
+
+// The point of the spheroid under each triangle's centroid.
+std::vector<Vector3r> surfacePoints(Real a, Real b, const TriangleSurface& surface) {
   const ImplicitSolid solid = spheroid(a, b);
+  std::vector<Vector3r> points;
+  points.reserve(surface.triangles.size());
+  for (const Triangle& t : surface.triangles)
+    points.push_back(
+        projectOnSurface(solid, (surface.vertices[t[0]] + surface.vertices[t[1]] + surface.vertices[t[2]]) / 3));
+  return points;
+}
+
+}  // namespace
+
+std::vector<Real> spheroidTriangleCurvatures(Real a, Real b, const TriangleSurface& surface) {
   std::vector<Real> curvatures;
-  curvatures.reserve(surface.triangles.size());
-  for (const Triangle& t : surface.triangles) {
-    const Vector3r centroid = (surface.vertices[t[0]] + surface.vertices[t[1]] + surface.vertices[t[2]]) / 3;
-    curvatures.push_back(spheroidMeanCurvature(a, b, projectOnSurface(solid, centroid)));
-  }
+  for (const Vector3r& x : surfacePoints(a, b, surface)) curvatures.push_back(spheroidMeanCurvature(a, b, x));
   return curvatures;
+}
+
+std::vector<PrincipalCurvature> spheroidTrianglePrincipalCurvatures(Real a, Real b, const TriangleSurface& surface) {
+  const Vector3r hessian(2 / (b * b), 2 / (b * b), 2 / (a * a));
+  const std::vector<Vector3r> points = surfacePoints(a, b, surface);
+  std::vector<PrincipalCurvature> out;
+  for (std::size_t t = 0; t < points.size(); ++t) {
+    const Vector3r gradient = hessian.cwiseProduct(points[t]);
+    const Vector3r n = gradient.normalized();
+    const Matrix3r P = Matrix3r::Identity() - n * n.transpose();
+    const Matrix3r shapeOperator = P * hessian.asDiagonal() * P / gradient.norm();
+    const Triangle& c = surface.triangles[t];
+    const Vector3r normal =
+        (surface.vertices[c[1]] - surface.vertices[c[0]]).cross(surface.vertices[c[2]] - surface.vertices[c[0]]);
+    out.push_back(principalCurvature(shapeOperator, n, normal.normalized()));
+  }
+  return out;
 }
 
 }  // namespace roundedmesh

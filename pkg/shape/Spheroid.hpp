@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "pkg/shape/PrincipalCurvature.hpp"
 #include "pkg/shape/TriangleSurface.hpp"
 
 namespace roundedmesh {
@@ -18,5 +19,10 @@ Real spheroidMeanCurvature(Real a, Real b, const Vector3r& x);
 // Per triangle: H where Newton steps along the gradient of f from the triangle's centroid meet the spheroid
 // (close to the nearest point; the centroid lies within a cap height of the surface).
 std::vector<Real> spheroidTriangleCurvatures(Real a, Real b, const TriangleSurface& surface);
+
+// Per triangle, at the same surface point: both principal curvatures and directions of the shape operator
+// P Hess(f) P / |grad f| of f = (x^2 + y^2)/b^2 + z^2/a^2 - 1 (P: projection on the tangent plane), in the
+// triangle's plane.
+std::vector<PrincipalCurvature> spheroidTrianglePrincipalCurvatures(Real a, Real b, const TriangleSurface& surface);
 
 }  // namespace roundedmesh

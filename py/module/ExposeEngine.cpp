@@ -19,7 +19,7 @@
 namespace roundedmesh::python {
 namespace {
 
-PressureOptions pressureOptions(Real gamma, const std::string& regime) {
+PressureOptions pressureOptions(Real gamma, const std::string& regime, const std::string& curvature) {
   if (!(std::isfinite(gamma) && gamma > 0))
     throw std::invalid_argument("gamma must be positive and finite, got " + std::to_string(gamma));
   PressureOptions options;
@@ -32,6 +32,12 @@ PressureOptions pressureOptions(Real gamma, const std::string& regime) {
     options.regime = RegimeChoice::Direct;
   else
     throw std::invalid_argument("regime must be 'auto', 'quadrature' or 'direct', got '" + regime + "'");
+  if (curvature == "mean")
+    options.curvature = CurvatureModel::Mean;
+  else if (curvature == "principal")
+    options.curvature = CurvatureModel::Principal;
+  else
+    throw std::invalid_argument("curvature must be 'mean' or 'principal', got '" + curvature + "'");
   return options;
 }
 
@@ -74,10 +80,11 @@ class Engine {
     const int id = bp::extract<int>(body.attr("id"));
     model_.partners.push_back({id, sphereShape(body, id), material, true});
   }
-  void setOptions(Real gamma, const std::string& regime, const std::string& friction, Real stopOverlap) {
+  void setOptions(Real gamma, const std::string& regime, const std::string& friction, Real stopOverlap,
+                  const std::string& curvature) {
     if (!(stopOverlap > 0))
       throw std::invalid_argument("stop_overlap must be positive (math.inf: never), got " + std::to_string(stopOverlap));
-    model_.pressure = pressureOptions(gamma, regime);
+    model_.pressure = pressureOptions(gamma, regime, curvature);
     model_.friction = frictionLaw(friction);
     model_.stopOverlap = stopOverlap;
   }
@@ -352,13 +359,14 @@ bp::tuple asTuple(const PairEvaluation& e) {
 bp::tuple planeContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& planePoint,
                        const Vector3r& planeNormal, const HertzMaterial& meshMaterial,
                        const HertzMaterial& planeMaterial, const Vector3r& vel, const Vector3r& angVel, Real gamma,
-                       const std::string& regime, const std::string& friction) {
+                       const std::string& regime, const std::string& friction, const std::string& curvature) {
   requireFinite(planePoint, "plane_point");
   requireFinite(planeNormal, "plane_normal");
   if (planeNormal.norm() == 0) throw std::invalid_argument("plane_normal must not be zero");
   const PairEvaluation e = roundedmesh::planeContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
                                                      Plane{planePoint, planeNormal.normalized()}, planeMaterial,
-                                                     pressureOptions(gamma, regime), false, frictionLaw(friction));
+                                                     pressureOptions(gamma, regime, curvature), false,
+                                                     frictionLaw(friction));
   return bp::make_tuple(e.onFirst.force, e.onFirst.torque);
 }
 
@@ -366,14 +374,14 @@ bp::tuple sphereContact(const BodyMesh& mesh, const Vector3r& pos, const Quatern
                         Real radius, const HertzMaterial& meshMaterial, const HertzMaterial& sphereMaterial,
                         const Vector3r& vel, const Vector3r& angVel, const Vector3r& sphereVel,
                         const Vector3r& sphereAngVel, Real gamma, const std::string& regime, bool details,
-                        const std::string& friction) {
+                        const std::string& friction, const std::string& curvature) {
   requireFinite(centre, "centre");
   if (!(std::isfinite(radius) && radius > 0))
     throw std::invalid_argument("radius must be positive and finite, got " + std::to_string(radius));
   return asTuple(roundedmesh::sphereContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
                                             Sphere{radius},
                                             bodyState(centre, Quaternionr::Identity(), sphereVel, sphereAngVel, 2),
-                                            sphereMaterial, pressureOptions(gamma, regime), details,
+                                            sphereMaterial, pressureOptions(gamma, regime, curvature), details,
                                             frictionLaw(friction)));
 }
 
@@ -381,10 +389,10 @@ bp::tuple bodyContact(const BodyMesh& mesh1, const Vector3r& pos1, const Quatern
                       const Vector3r& pos2, const Quaternionr& ori2, const HertzMaterial& material1,
                       const HertzMaterial& material2, const Vector3r& vel1, const Vector3r& angVel1,
                       const Vector3r& vel2, const Vector3r& angVel2, Real gamma, const std::string& regime,
-                      bool details, const std::string& friction) {
+                      bool details, const std::string& friction, const std::string& curvature) {
   return asTuple(roundedmesh::bodyContact(roundedBody(0, mesh1, material1), bodyState(pos1, ori1, vel1, angVel1, 1),
                                           roundedBody(1, mesh2, material2), bodyState(pos2, ori2, vel2, angVel2, 2),
-                                          pressureOptions(gamma, regime), details, frictionLaw(friction)));
+                                          pressureOptions(gamma, regime, curvature), details, frictionLaw(friction)));
 }
 
 const char* partnerKindName(const Plane&) { return "Plane"; }
@@ -401,7 +409,7 @@ void exposeEngine() {
       .def("add_partner", &Engine::addPartner, (bp::arg("body"), bp::arg("material")))
       .def("add_sphere", &Engine::addSphere, (bp::arg("body"), bp::arg("material")))
       .def("set_options", &Engine::setOptions,
-           (bp::arg("gamma"), bp::arg("regime"), bp::arg("friction"), bp::arg("stop_overlap")))
+           (bp::arg("gamma"), bp::arg("regime"), bp::arg("friction"), bp::arg("stop_overlap"), bp::arg("curvature")))
       .def("step", &Engine::step, bp::arg("O"))
       .def("stops", &Engine::stops)
       .def("fastest", &Engine::fastest)
@@ -426,25 +434,26 @@ void exposeEngine() {
           (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("plane_point"), bp::arg("plane_normal"),
            bp::arg("mesh_material"), bp::arg("plane_material"), bp::arg("vel") = Vector3r(Vector3r::Zero()),
            bp::arg("ang_vel") = Vector3r(Vector3r::Zero()), bp::arg("gamma") = 10.0, bp::arg("regime") = "auto",
-           bp::arg("friction") = "spring"),
+           bp::arg("friction") = "spring", bp::arg("curvature") = "mean"),
           "(force, torque) on a rounded body at pos, ori, moving with vel, ang_vel, pressed against the fixed\n"
           "plane through plane_point with plane_normal pointing toward the body side. Torque is about pos.\n"
           "gamma and regime ('auto', 'quadrature', 'direct') select the pressure integration (Eq. 14); friction\n"
-          "('spring', 'viscous') the tangential law, as for rm.engine: the spring of a contact evaluated once has no\n"
-          "history, so only its damping acts.");
+          "('spring', 'viscous') the tangential law and curvature ('mean', 'principal') the contact's curvature, as\n"
+          "for rm.engine: the spring of a contact evaluated once has no history, so only its damping acts.");
 
   const Vector3r zero = Vector3r::Zero();
   bp::def("_sphere_contact", &sphereContact,
           (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("centre"), bp::arg("radius"),
            bp::arg("mesh_material"), bp::arg("sphere_material"), bp::arg("vel") = zero, bp::arg("ang_vel") = zero,
            bp::arg("sphere_vel") = zero, bp::arg("sphere_ang_vel") = zero, bp::arg("gamma") = 10.0,
-           bp::arg("regime") = "auto", bp::arg("details") = false, bp::arg("friction") = "spring"),
+           bp::arg("regime") = "auto", bp::arg("details") = false, bp::arg("friction") = "spring",
+           bp::arg("curvature") = "mean"),
           "(F1, T1, F2, T2, contacts): see roundedmesh.sphere_contact.");
   bp::def("_body_contact", &bodyContact,
           (bp::arg("mesh1"), bp::arg("pos1"), bp::arg("ori1"), bp::arg("mesh2"), bp::arg("pos2"), bp::arg("ori2"),
            bp::arg("material1"), bp::arg("material2"), bp::arg("vel1") = zero, bp::arg("ang_vel1") = zero,
            bp::arg("vel2") = zero, bp::arg("ang_vel2") = zero, bp::arg("gamma") = 10.0, bp::arg("regime") = "auto",
-           bp::arg("details") = false, bp::arg("friction") = "spring"),
+           bp::arg("details") = false, bp::arg("friction") = "spring", bp::arg("curvature") = "mean"),
           "(F1, T1, F2, T2, contacts): see roundedmesh.body_contact.");
 }
 

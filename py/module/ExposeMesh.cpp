@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "pkg/io/MeshFile.hpp"
+#include "pkg/meshing/ImplicitCurvature.hpp"
 #include "pkg/shape/BlendedShape.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/Curvature.hpp"
@@ -48,9 +49,10 @@ MeshPtr bodyMesh(const TriangleSurface& surface, const bp::object& radius, const
 }
 
 // The generators' curvature: "exact" (the smooth shape's, prescribed) or "computed" (Eq. 1 from the mesh).
-MeshPtr generated(const TriangleSurface& surface, const std::string& curvature, std::vector<Real> exact) {
+MeshPtr generated(const TriangleSurface& surface, const std::string& curvature, std::vector<Real> exact,
+                  std::optional<std::vector<PrincipalCurvature>> exactPrincipal = std::nullopt) {
   if (curvature == "computed") return std::make_shared<BodyMesh>(surface, std::nullopt);
-  if (curvature == "exact") return std::make_shared<BodyMesh>(surface, std::move(exact));
+  if (curvature == "exact") return std::make_shared<BodyMesh>(surface, std::move(exact), std::nullopt, std::move(exactPrincipal));
   raiseValueError("curvature must be 'exact' or 'computed', got '" + curvature + "'");
 }
 
@@ -86,17 +88,17 @@ MeshPtr makeIcosphere(Real radius, int subdivisions, Real distortion, unsigned s
 
 MeshPtr makeSpheroid(Real a, Real b, int nodes, const std::string& curvature) {
   const TriangleSurface s = spheroidSurface(a, b, nodes);
-  return generated(s, curvature, spheroidTriangleCurvatures(a, b, s));
+  return generated(s, curvature, spheroidTriangleCurvatures(a, b, s), spheroidTrianglePrincipalCurvatures(a, b, s));
 }
 
 MeshPtr makeCylinder(Real radius, Real length, int nodes, const std::string& curvature) {
   const TriangleSurface s = cylinderSurface(radius, length, nodes);
-  return generated(s, curvature, cylinderTriangleCurvatures(radius, s));
+  return generated(s, curvature, cylinderTriangleCurvatures(radius, s), cylinderTrianglePrincipalCurvatures(radius, s));
 }
 
 // Mesh._blended_shape(blend, primitives, nodes, volume): primitives as (a, b, radius) triples in shape units;
 // returns (mesh, scale). roundedmesh.Mesh.reference_shape reads them from shapes.json.
-bp::tuple makeBlendedShape(Real blend, const bp::list& primitives, int nodes, Real volume) {
+bp::tuple makeBlendedShape(Real blend, const bp::list& primitives, int nodes, Real volume, const std::string& curvature) {
   BlendedShape shape{blend, {}};
   for (int i = 0; i < bp::len(primitives); ++i) {
     const bp::object p = primitives[i];
@@ -104,7 +106,12 @@ bp::tuple makeBlendedShape(Real blend, const bp::list& primitives, int nodes, Re
   }
   Real scale = 0;
   const TriangleSurface s = blendedShapeSurface(shape, nodes, volume, &scale);
-  return bp::make_tuple(std::make_shared<BodyMesh>(s, std::nullopt), scale);
+  if (curvature == "computed") return bp::make_tuple(std::make_shared<BodyMesh>(s, std::nullopt), scale);
+  if (curvature != "exact") raiseValueError("curvature must be 'exact' or 'computed', got '" + curvature + "'");
+  const ImplicitSolid solid = implicitSolid(shape);
+  SurfaceCurvatures exact = implicitSurfaceCurvatures(solid, s, scale, 1e-4 * solid.thickness);
+  return bp::make_tuple(std::make_shared<BodyMesh>(s, std::move(exact.mean), std::nullopt, std::move(exact.principal)),
+                        scale);
 }
 
 std::vector<Vector3r> perTriangle(const BodyMesh& mesh, Vector3r RoundedTriangle::*field) {
@@ -134,6 +141,24 @@ std::string repr(const BodyMesh& m) {
   return s.str();
 }
 
+// (m, 2) principal curvatures k1 >= k2 of each triangle [1/m], and (m, 3) the direction of k1, principal frame.
+np::ndarray principalValues(const BodyMesh& m) {
+  const std::vector<PrincipalCurvature>& k = m.shape().principalCurvatures();
+  np::ndarray out = np::empty(bp::make_tuple(k.size(), 2), np::dtype::get_builtin<Real>());
+  Real* data = reinterpret_cast<Real*>(out.get_data());
+  for (std::size_t t = 0; t < k.size(); ++t) {
+    data[2 * t] = k[t].k1;
+    data[2 * t + 1] = k[t].k2;
+  }
+  return out;
+}
+
+np::ndarray principalDirections(const BodyMesh& m) {
+  std::vector<Vector3r> d;
+  for (const PrincipalCurvature& k : m.shape().principalCurvatures()) d.push_back(k.d1);
+  return toArray(d);
+}
+
 // Pickling goes through roundedmesh._restore_mesh, a Python function (Boost.Python's own functions cannot
 // be pickled by reference), which calls Mesh._restore.
 bp::tuple reduce(const bp::object& self) {
@@ -142,17 +167,26 @@ bp::tuple reduce(const bp::object& self) {
                         bp::make_tuple(toArray(m.shape().vertices()), toArray(m.shape().triangles()),
                                        toArray(m.shape().radii()), m.inputCentroid(), m.inputOrientation(),
                                        toArray(m.curvature().meanCurvatures), curvatureMode(m),
-                                       m.curvature().maxRadius));
+                                       m.curvature().maxRadius, principalValues(m), principalDirections(m)));
 }
 
 // Unpickling: a mesh already in its principal frame, with the pose it was given in (roundedmesh._restore_mesh
 // fills in what older records lack).
 MeshPtr restoreMesh(const bp::object& vertices, const bp::object& triangles, const bp::object& radii,
                     const Vector3r& centroid, const Quaternionr& orientation, const bp::object& curvatures,
-                    const std::string& mode, Real maxRadius) {
+                    const std::string& mode, Real maxRadius, const bp::object& k1, const bp::object& k2,
+                    const bp::object& directions) {
   std::vector<Triangle> corners = toTriangles(triangles, "triangles");
   const int count = static_cast<int>(corners.size());
-  RoundedMesh shape(toPoints(vertices, "vertices"), std::move(corners), toPerTriangle(radii, count, "radii"));
+  std::vector<PrincipalCurvature> principal;
+  if (!k1.is_none()) {
+    const std::vector<Real> larger = toPerTriangle(k1, count, "k1"), smaller = toPerTriangle(k2, count, "k2");
+    const std::vector<Vector3r> d1 = toPoints(directions, "principal directions");
+    if (static_cast<int>(d1.size()) != count) raiseValueError("principal directions: one per triangle expected");
+    for (int t = 0; t < count; ++t) principal.push_back({larger[t], smaller[t], d1[t]});
+  }
+  RoundedMesh shape(toPoints(vertices, "vertices"), std::move(corners), toPerTriangle(radii, count, "radii"),
+                    std::move(principal));
   SurfaceCurvature curvature;
   curvature.meanCurvatures = toPerTriangle(curvatures, count, "curvatures");
   if (mode != "computed" && mode != "prescribed")
@@ -212,7 +246,7 @@ void exposeMesh() {
       .def("spheroid", &makeSpheroid, (bp::arg("a"), bp::arg("b"), bp::arg("nodes"), bp::arg("curvature") = "exact"),
            "Spheroid with semi-axis a [m] along z and b [m] across, about `nodes` nodes (typically within 2 %), near-\n"
            "equilateral triangles. curvature: 'exact' (the spheroid's mean curvature under each triangle) or\n"
-           "'computed' (Eq. 1 from the mesh).")
+           "'computed' (Eq. 1 from the mesh). Both principal curvatures likewise (exact, or estimated from the mesh).")
       .staticmethod("spheroid")
       .def("cylinder", &makeCylinder,
            (bp::arg("radius"), bp::arg("length"), bp::arg("nodes"), bp::arg("curvature") = "exact"),
@@ -220,11 +254,14 @@ void exposeMesh() {
            "(mean curvature 1/(2 radius) on the hull, flat caps) or 'computed' (Eq. 1 from the mesh).")
       .staticmethod("cylinder")
       .def("_blended_shape", &makeBlendedShape,
-           "Mesh._blended_shape(blend, primitives, nodes, volume) -> (mesh, scale); see Mesh.reference_shape.")
+           (bp::arg("blend"), bp::arg("primitives"), bp::arg("nodes"), bp::arg("volume"), bp::arg("curvature") = "computed"),
+           "Mesh._blended_shape(blend, primitives, nodes, volume, curvature='computed') -> (mesh, scale); see\n"
+           "Mesh.reference_shape.")
       .staticmethod("_blended_shape")
       .def("_restore", &restoreMesh,
            (bp::arg("vertices"), bp::arg("triangles"), bp::arg("radii"), bp::arg("centroid"), bp::arg("orientation"),
-            bp::arg("curvatures"), bp::arg("mode"), bp::arg("max_radius")),
+            bp::arg("curvatures"), bp::arg("mode"), bp::arg("max_radius"), bp::arg("k1") = bp::object(),
+            bp::arg("k2") = bp::object(), bp::arg("principal_directions") = bp::object()),
            "A mesh already in its principal frame, as pickled or saved with a scene, rebuilt without moving it.")
       .staticmethod("_restore")
       .add_property("vertices", +[](const BodyMesh& m) { return toArray(m.shape().vertices()); },
@@ -238,6 +275,12 @@ void exposeMesh() {
                     "(m,) signed mean curvature of each triangle [1/m]: computed (Eq. 1) or prescribed; < 0 concave")
       .add_property("node_curvatures", +[](const BodyMesh& m) { return toArray(meanCurvature(bodySurface(m)).nodes); },
                     "(n,) signed mean curvature at each node computed from the mesh (Eq. 1) [1/m], whatever the mode")
+      .add_property("principal_curvatures", &principalValues,
+                    "(m, 2) both principal curvatures k1 >= k2 of each triangle [1/m] (< 0 concave), for\n"
+                    "engine(curvature='principal'): prescribed by the generators with curvature='exact', both equal to\n"
+                    "the mean curvature when that is prescribed, else estimated from the mesh (Rusinkiewicz 2004)")
+      .add_property("principal_directions", &principalDirections,
+                    "(m, 3) unit direction of k1 on each triangle, principal frame; k2's is normal x direction")
       .add_property("curvature_mode", &curvatureMode, "'computed' (Eq. 1 from the mesh) or 'prescribed'")
       .add_property("max_radius", +[](const BodyMesh& m) { return m.curvature().maxRadius; },
                     "radius flat and concave triangles use in contact [m]")

@@ -6,9 +6,10 @@ validation, for pictures, and to look inside a contact.
     triangle_contacts(mesh1, pos1, ori1, mesh2_or_radius, pos2, ori2, ...) -> the triangle pairs in contact
 
 Forces [N] and torques [N m] are global; each torque is about its own body's position. Velocities [m/s] and
-angular velocities [rad/s] are global. gamma and regime choose the pressure integration and friction ('spring' or
-'viscous') the tangential law, as for engine(); a contact evaluated once has no history, so the spring's
-displacement is zero and only its damping -c v_t acts (capped by Coulomb).
+angular velocities [rad/s] are global. gamma and regime choose the pressure integration, friction ('spring' or
+'viscous') the tangential law and curvature ('mean' or 'principal') the contact's shape, as for engine(); a contact
+evaluated once has no history, so the spring's displacement is zero and only its damping -c v_t acts (capped by
+Coulomb).
 """
 import numpy as np
 
@@ -18,23 +19,26 @@ _ZERO = (0.0, 0.0, 0.0)
 
 
 def body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
-                 vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto", friction="spring"):
+                 vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto", friction="spring",
+                 curvature="mean"):
     """(force on 1, torque on 1, force on 2, torque on 2) of two rounded bodies: Mesh mesh1 in its principal
     frame placed at pos1 turned by ori1, likewise mesh2; materials are HertzMaterials."""
     return _body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1, ang_vel1, vel2, ang_vel2,
-                         gamma, regime, False, friction)[:4]
+                         gamma, regime, False, friction, curvature)[:4]
 
 
 def sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel=_ZERO, ang_vel=_ZERO,
-                   sphere_vel=_ZERO, sphere_ang_vel=_ZERO, gamma=10.0, regime="auto", friction="spring"):
+                   sphere_vel=_ZERO, sphere_ang_vel=_ZERO, gamma=10.0, regime="auto", friction="spring",
+                 curvature="mean"):
     """(force on the body, torque on it, force on the sphere, torque on it) of a rounded body against an
     analytic sphere of `radius` [m] centred at `centre` (what a YADE Sphere partner is)."""
     return _sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel, ang_vel, sphere_vel,
-                           sphere_ang_vel, gamma, regime, False, friction)[:4]
+                           sphere_ang_vel, gamma, regime, False, friction, curvature)[:4]
 
 
 def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
-                      vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto", friction="spring"):
+                      vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto", friction="spring",
+                 curvature="mean"):
     """The triangle pairs in contact in body_contact's configuration, as a dict of numpy arrays with one row
     per pair. `mesh2` may instead be a number: the radius of an analytic sphere centred at pos2 (ori2 is then
     ignored). Columns:
@@ -51,10 +55,10 @@ def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2
         node_forces1, node_forces2   Eq. 15 on each triangle's corners [N] (NaN for the analytic sphere)"""
     if isinstance(mesh2, (int, float)):
         listed = _sphere_contact(mesh1, pos1, ori1, pos2, float(mesh2), material1, material2, vel1, ang_vel1, vel2,
-                                 ang_vel2, gamma, regime, True, friction)[4]
+                                 ang_vel2, gamma, regime, True, friction, curvature)[4]
     else:
         listed = _body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1, ang_vel1, vel2,
-                               ang_vel2, gamma, regime, True, friction)[4]
+                               ang_vel2, gamma, regime, True, friction, curvature)[4]
     columns = {}
     for name in ("triangle1", "triangle2"):
         columns[name] = np.array([c[name] for c in listed], dtype=int)

@@ -47,7 +47,8 @@ _ENGINE_COMMAND = "__import__('roundedmesh').scene.step"
 # sphere's radius), a pair whose overlap grows stops the run (kStopOverlap in pkg/engine/ContactModel.hpp;
 # doc/physics.md, "Deep overlaps and fast impacts").
 STOP_OVERLAP = 0.5
-_ENGINE_OPTIONS = {"gamma": 10.0, "regime": "auto", "friction": "spring", "stop_overlap": STOP_OVERLAP}
+_ENGINE_OPTIONS = {"gamma": 10.0, "regime": "auto", "friction": "spring", "stop_overlap": STOP_OVERLAP,
+                   "curvature": "mean"}
 _FRICTION_LAWS = ("spring", "viscous")
 
 
@@ -113,15 +114,20 @@ def _store_mesh(mesh):
 
 
 def _restore_mesh(vertices, triangles, radii, centroid, orientation, curvatures=None, mode="prescribed",
-                  max_radius=None):
+                  max_radius=None, principal_curvatures=None, principal_directions=None):
     """Unpickles a Mesh (see Mesh.__reduce__), also from a scene's record. Meshes saved before curvatures were
-    kept have only radii: their curvature was then the prescribed 1/R, and no radius exceeded the largest."""
+    kept have only radii: their curvature was then the prescribed 1/R, and no radius exceeded the largest. Meshes
+    saved before principal curvatures were kept get both equal to 1/R."""
     radii = np.asarray(radii, float)
     if curvatures is None:
         curvatures = 1 / radii
     if max_radius is None:
         max_radius = float(radii.max())
-    return Mesh._restore(vertices, triangles, radii, centroid, orientation, curvatures, mode, max_radius)
+    if principal_curvatures is None:
+        return Mesh._restore(vertices, triangles, radii, centroid, orientation, curvatures, mode, max_radius)
+    k = np.asarray(principal_curvatures, float)
+    return Mesh._restore(vertices, triangles, radii, centroid, orientation, curvatures, mode, max_radius,
+                         k[:, 0].copy(), k[:, 1].copy(), principal_directions)
 
 
 def _load_mesh(key):
@@ -357,6 +363,10 @@ def engine(label="", **options):
                       "Friction")
       stop_overlap -- a pair whose overlap grows past this fraction of the smaller side's size (r_eq, or a
                       sphere's radius) stops the run; default STOP_OVERLAP = 0.5, math.inf never
+      curvature    -- 'mean' (default): the paper's contact circle from each triangle's mean curvature (Eq. 1);
+                      'principal': Hertz's contact ellipse from both principal curvatures of each triangle
+                      (Mesh.principal_curvatures), concave triangles following the smooth surface
+                      (doc/physics.md, "Principal curvatures: the contact ellipse")
     A body whose centre passes through a Wall, Facet or Box it was near in the step before stops the run too
     (doc/user-guide.md, "Choosing the time step").
     """
@@ -372,7 +382,8 @@ def engine(label="", **options):
     if not chosen["stop_overlap"] > 0:
         raise ValueError(f"stop_overlap: must be positive (math.inf: never), got {chosen['stop_overlap']!r}")
     chosen["stop_overlap"] = float(chosen["stop_overlap"])
-    for name, value in (("regime", chosen["regime"]), ("friction", chosen["friction"]), ("label", label)):
+    for name, value in (("regime", chosen["regime"]), ("friction", chosen["friction"]),
+                        ("curvature", chosen["curvature"]), ("label", label)):
         if not isinstance(value, str):
             raise TypeError(f"{name}: expected a string, got {value!r}")
     Engine().set_options(**chosen)

@@ -23,17 +23,18 @@ def names():
     return sorted(definitions()["shapes"])
 
 
-def mesh_with_scale(name, nodes=None):
+def mesh_with_scale(name, nodes=None, curvature="computed"):
     """(mesh, scale): the reference shape meshed with about `nodes` nodes (default: the paper's count) and
-    the factor [m per shape unit] that gives it the volume of a sphere of the volume-equivalent radius."""
+    the factor [m per shape unit] that gives it the volume of a sphere of the volume-equivalent radius;
+    curvature as for reference_shape."""
     shapes = definitions()["shapes"]
     if name not in shapes:
         raise ValueError(f"name: unknown reference shape {name!r}; known: {', '.join(names())}")
-    return _meshed(name, shapes[name]["paper_node_count"] if nodes is None else int(nodes))
+    return _meshed(name, shapes[name]["paper_node_count"] if nodes is None else int(nodes), curvature)
 
 
 @functools.lru_cache(maxsize=None)
-def _meshed(name, nodes):
+def _meshed(name, nodes, curvature):
     shape = definitions()["shapes"][name]
     primitives = []
     for p in shape["primitives"]:
@@ -44,14 +45,16 @@ def _meshed(name, nodes):
         else:
             raise ValueError(f"shapes.json: {name} has a primitive of unknown type {p['type']!r}")
     radius = definitions()["volume_equivalent_radius"]
-    return Mesh._blended_shape(shape["blend_k"], primitives, nodes, 4 / 3 * math.pi * radius**3)
+    return Mesh._blended_shape(shape["blend_k"], primitives, nodes, 4 / 3 * math.pi * radius**3, curvature)
 
 
-def reference_shape(name, nodes=None):
-    """Mesh.reference_shape(name, nodes=None): the reference shape `name` ('pear' or 'gummy_bear') of
-    shapes.json, meshed from its implicit function with CGAL into near-equilateral triangles with about
-    `nodes` nodes (typically within 2 %; default the paper's 486 and 554), scaled so that its volume is that of a
-    sphere of radius 0.025 m, with each triangle's curvature computed from the mesh (Eq. 1). Concave regions
-    (the gummy bear's neck, between the legs) get negative curvature. Meshes are cached: asking again for
-    the same shape and node count returns the same Mesh."""
-    return mesh_with_scale(name, nodes)[0]
+def reference_shape(name, nodes=None, curvature="computed"):
+    """Mesh.reference_shape(name, nodes=None, curvature='computed'): the reference shape `name` ('pear' or
+    'gummy_bear') of shapes.json, meshed from its implicit function with CGAL into near-equilateral triangles with
+    about `nodes` nodes (typically within 2 %; default the paper's 486 and 554), scaled so that its volume is that
+    of a sphere of radius 0.025 m. curvature: 'computed' (the paper's: each triangle's mean curvature from the mesh,
+    Eq. 1, and both principal curvatures estimated from it) or 'exact' (the smooth shape's, from the implicit
+    function's shape operator at the triangle). Concave regions (the gummy bear's neck, between the legs) get
+    negative curvature. Meshes are cached: asking again for the same shape, node count and curvature returns the
+    same Mesh."""
+    return mesh_with_scale(name, nodes, curvature)[0]

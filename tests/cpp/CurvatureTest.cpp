@@ -10,27 +10,10 @@
 #include "pkg/shape/Curvature.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "pkg/shape/Spheroid.hpp"
+#include "tests/cpp/TestSupport.hpp"
 
 namespace roundedmesh {
 namespace {
-
-// Torus with tube radius r around a circle of radius R in the xy plane: a regular (u, v) grid, each quad
-// split in two. v = 0 on the outer equator. Mean curvature H = (R + 2 r cos v) / (2 r (R + r cos v)).
-TriangleSurface torus(Real R, Real r, int around, int tube) {
-  TriangleSurface s;
-  for (int i = 0; i < around; ++i)
-    for (int j = 0; j < tube; ++j) {
-      const Real u = 2 * M_PI * i / around, v = 2 * M_PI * j / tube;
-      s.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
-    }
-  auto node = [&](int i, int j) { return (i % around) * tube + (j % tube); };
-  for (int i = 0; i < around; ++i)
-    for (int j = 0; j < tube; ++j) {
-      s.triangles.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1)});
-      s.triangles.push_back({node(i, j), node(i + 1, j + 1), node(i, j + 1)});
-    }
-  return s;
-}
 
 // The requirement: on the regular icospheres of 642 and 2562 nodes every triangle's radius is
 // within 1 % of the sphere's. The operator's error there is O(h^2) at valence-6 nodes: measured 2.4e-5 and
@@ -130,7 +113,7 @@ TEST(Curvature, SpheroidNodesMatchTheAnalyticMeanCurvature) {
 TEST(Curvature, TorusIsConcaveInsideAndConvexOutside) {
   const Real R = 1.0, r = 0.4;
   const int around = 96, tube = 48;
-  const TriangleSurface s = torus(R, r, around, tube);
+  const TriangleSurface s = test::torus(R, r, around, tube);
   const MeanCurvature h = meanCurvature(s);
   for (int j = 0; j < tube; ++j) {
     const Real v = 2 * M_PI * j / tube;

@@ -10,8 +10,28 @@
 
 #include "pkg/engine/BodyState.hpp"
 #include "pkg/math/ConvexPolygon.hpp"
+#include "pkg/shape/TriangleSurface.hpp"
 
 namespace roundedmesh::test {
+
+// Torus with tube radius r around a circle of radius R in the xy plane: a regular (u, v) grid, each quad
+// split in two. v = 0 on the outer equator. Principal curvatures 1/r around the tube and cos v / (R + r cos v)
+// around the axis (negative on the inner side); mean curvature H = (R + 2 r cos v) / (2 r (R + r cos v)).
+inline TriangleSurface torus(Real R, Real r, int around, int tube) {
+  TriangleSurface s;
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < tube; ++j) {
+      const Real u = 2 * M_PI * i / around, v = 2 * M_PI * j / tube;
+      s.vertices.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
+    }
+  auto node = [&](int i, int j) { return (i % around) * tube + (j % tube); };
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < tube; ++j) {
+      s.triangles.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1)});
+      s.triangles.push_back({node(i, j), node(i + 1, j + 1), node(i, j + 1)});
+    }
+  return s;
+}
 
 // Gauss-Legendre nodes and weights on [-1, 1] (Newton iteration on the Legendre polynomial).
 // A body state at `position` turned by `orientation`, at rest.
