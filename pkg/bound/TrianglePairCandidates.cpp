@@ -159,7 +159,7 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
 
 void touchableTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
                             const Vector3r& translation, Real skin, Real depth, const std::vector<TrianglePair>& near,
-                            std::vector<TrianglePair>& pairs, bool circleFilter) {
+                            std::vector<TrianglePair>& pairs) {
   pairs.clear();
   const Real reach = depth + skin;
   const Matrix3r absRotation = rotation.cwiseAbs();
@@ -169,7 +169,7 @@ void touchableTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, 
     const Vector3r centre = rotation * b.center() + translation;
     const Vector3r half = (absRotation * (0.5 * b.sizes())).array() + reach;
     if (!mesh1.tree().triangleBox(st[0]).intersects(AlignedBox3r(centre - half, centre + half))) continue;
-    if (canTouch(mesh1, st[0], mesh2, st[1], rotation, translation, skin, reach, circleFilter)) pairs.push_back(st);
+    if (canTouch(mesh1, st[0], mesh2, st[1], rotation, translation, skin, reach, true)) pairs.push_back(st);
   }
 }
 

@@ -39,10 +39,8 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
                        std::vector<TrianglePair>& pairs);
 
 // From `near` (a list for a larger skin and depth, built at a pose within (its skin - skin) of this one).
-// Without circleFilter, filter 5 is left out: an elliptical contact (EllipticalContact.hpp) reaches beyond the
-// circle of the encompassing spheres.
 void touchableTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
                             const Vector3r& translation, Real skin, Real depth, const std::vector<TrianglePair>& near,
-                            std::vector<TrianglePair>& pairs, bool circleFilter = true);
+                            std::vector<TrianglePair>& pairs);
 
 }  // namespace roundedmesh

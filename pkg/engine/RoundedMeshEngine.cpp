@@ -85,7 +85,7 @@ Real motionBound(const Quaternionr& fromRotation, const Vector3r& fromTranslatio
 // only when it no longer covers the new one.
 void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Quaternionr& rotation,
                       const Matrix3r& matrix, const Vector3r& translation, const ListSkins& skins, Real radius,
-                      Real shallow, Real full, bool circleFilter, CandidateList& list, ContactStatistics& statistics) {
+                      Real shallow, Real full, CandidateList& list, ContactStatistics& statistics) {
   const Real bound = mesh2.sphereBoundRadius();
   auto needed = [&](Real skin) { return list.deepest > shallow ? full : 1.5 * list.deepest + 2 * skin; };
   Real skin = skins.candidatesMin * radius, depth = shallow;
@@ -115,7 +115,7 @@ void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const 
   list.age = 0;
   list.rotation = rotation;
   list.translation = translation;
-  touchableTrianglePairs(mesh1, mesh2, matrix, translation, skin, depth, list.near, list.pairs, circleFilter);
+  touchableTrianglePairs(mesh1, mesh2, matrix, translation, skin, depth, list.near, list.pairs);
   ++statistics.candidateRebuilds;
 }
 
@@ -150,8 +150,7 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
     };
     for (int pass = 0;; ++pass) {
       updateCandidates(*body.mesh, *other.mesh, rotation, matrix, translation, model.skins, smaller, shallow,
-                       list.deepest > shallow ? fullDepth() : shallow, curvature == CurvatureModel::Mean, list,
-                       statistics);
+                       list.deepest > shallow ? fullDepth() : shallow, list, statistics);
       NarrowPhaseCounts counts;
       geoms.clear();
       Ig2_RoundedMesh_RoundedMesh_PressureGeom(*body.mesh, *other.mesh, matrix, translation, list.pairs, shallow,

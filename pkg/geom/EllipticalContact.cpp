@@ -29,7 +29,6 @@ CapCurvature triangleCap(const RoundedMesh& mesh, int triangle, const PressureGe
   cap.correction = Matrix2r::Identity() / r.radius - cap.curvature;
   const Vector3r offset = rotation * r.circumcentre + translation - geom.centre;
   cap.base = Vector2r(offset.dot(geom.tangent1), offset.dot(geom.tangent2));
-  cap.circumradius = r.circumradius;
   cap.sphereCurvature = 1 / r.radius;
   cap.heightShift = capHeight(k.mean(), r.circumradius) - r.capHeight;
   return cap;
@@ -60,7 +59,6 @@ GeomTest ellipticalContact(PressureGeom& geom, const CapCurvature& cap1, const C
   if (!(overlap > 0)) return {Rejection::NoOverlap};
 
   const HertzEllipse ellipse = hertzEllipse(lambdaA, lambdaB, overlap);
-  if ((cap1.base - centre).squaredNorm() > std::pow(ellipse.a + cap1.circumradius, 2)) return {Rejection::OutsideCircle};
   const Real rho = std::sqrt(ellipse.a * ellipse.b);
   geom.elliptical = true;
   geom.ellipseCentre = centre;

@@ -1,7 +1,9 @@
 // The contact ellipse of one triangle contact when the surfaces are curved differently in different directions
 // (engine option curvature='principal'; doc/physics.md, "Principal curvatures: the contact ellipse").
 // The contact plane (normal n12, axes t1, t2, origin c) and the sphere overlap delta_s come from the encompassing
-// spheres, as for the paper's circular contact (TriangleSphereGeom.hpp, TrianglePlaneGeom.hpp). Each surface's cap
+// spheres, and only a pair the paper's circular contact accepts (S meets its circle) gets an ellipse
+// (TriangleSphereGeom.hpp, TrianglePlaneGeom.hpp): the quadrics' second-order overlap is meaningful only near the
+// caps, and far pairs of flat triangles, whose spheres overlap deeply, would otherwise take huge ellipses. Each surface's cap
 // is then the quadric with the triangle's principal curvatures (PrincipalCurvature.hpp) through the top of its
 // sphere's cap over the circumcentre, written as that sphere plus a correction, in plane coordinates about c:
 //   K_i      the shape operator in the plane, convex toward the partner positive: k1 e1 e1' + k2 e2 e2', e1 the
@@ -19,10 +21,8 @@
 // The ellipse is stored as the map y = T (x - x*) onto the circle of radius sqrt(a b) (det T = 1: areas are kept),
 // over which the law integrates the circular pressure (PressureGeom::toCircle). A pair whose larger relative
 // curvature lambdaB is below half the circular model's 1/R_1 + 1/R_2 (flat on flat, concave on concave: nothing
-// Hertzian to resolve) keeps the circle: geom is left circular and the caller completes it. Rejects the pair if
-// delta <= 0, if body 1's projected
-// circumcircle misses the circle about x* of radius a that holds the ellipse (as the circular model's first
-// circle test), or if S misses the ellipse.
+// Hertzian to resolve) keeps the circle: geom is left as the caller made it. Rejects the pair if
+// delta <= 0, or if S misses the ellipse.
 #pragma once
 
 #include "pkg/geom/PressureGeom.hpp"
@@ -35,7 +35,6 @@ struct CapCurvature {
   Matrix2r curvature = Matrix2r::Zero();   // K_i [1/m]
   Matrix2r correction = Matrix2r::Zero();  // D_i [1/m]
   Vector2r base = Vector2r::Zero();        // beta_i [m]
-  Real circumradius = 0;                   // rho_i [m]
   Real sphereCurvature = 0;                // 1/R_i of its sphere in the circular model (0: a plane) [1/m]
   Real heightShift = 0;                    // dh_i [m]
 };

@@ -21,8 +21,7 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
   // The projected triangle lies in the projected circumcircle: if that misses the contact circle, so does S.
   const Vector3r offset = rounded.circumcentre - c;
   const Real inPlaneSq = offset.squaredNorm() - std::pow(offset.dot(face.normal), 2);
-  const bool elliptical = model == CurvatureModel::Principal;
-  if (!elliptical && inPlaneSq > std::pow(a + rounded.circumradius, 2)) return {Rejection::OutsideCircle};
+  if (inPlaneSq > std::pow(a + rounded.circumradius, 2)) return {Rejection::OutsideCircle};
 
   auto toPlane = [&](const Vector3r& x) { return Vector2r((x - c).dot(face.tangent1), (x - c).dot(face.tangent2)); };
   const Triangle& corners = mesh.triangles()[triangle];
@@ -30,6 +29,10 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
   geom.polygon = ConvexPolygon::triangle(geom.nodes[0], geom.nodes[1], geom.nodes[2]);
   if (face.faceOutline) geom.polygon = geom.polygon.intersection(face.faceOutline->translated(toPlane(face.origin)));
   if (geom.polygon.empty()) return {Rejection::EmptyPolygon};
+
+  geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
+  const Real hSq = geom.effectivePoint.squaredNorm();
+  if (!(hSq < a * a)) return {Rejection::BeyondContactCircle};
 
   geom.triangle = triangle;
   geom.partnerTriangle = -1;
@@ -40,16 +43,11 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
   geom.radius = R;
   geom.sphereOverlap = overlap;
   geom.contactRadius = a;
+  geom.effectiveOverlap = overlap - R + std::sqrt(R * R - hSq);
   geom.elliptical = false;
-  if (elliptical) {
+  if (model == CurvatureModel::Principal) {
     const GeomTest ellipse = ellipticalContact(geom, triangleCap(mesh, triangle, geom), exactCap(0));
     if (!ellipse) return ellipse;
-  }
-  if (!geom.elliptical) {
-    geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
-    const Real hSq = geom.effectivePoint.squaredNorm();
-    if (!(hSq < a * a)) return {Rejection::BeyondContactCircle};
-    geom.effectiveOverlap = overlap - R + std::sqrt(R * R - hSq);
   }
   setRelativeVelocity(geom, motion);
   return {Rejection::None};

@@ -25,7 +25,7 @@ struct ContactFace {
   const ConvexPolygon* faceOutline = nullptr;
 };
 
-// With CurvatureModel::Principal the circle tests give way to the ellipse of EllipticalContact.hpp.
+// With CurvatureModel::Principal a contact the circle accepts then takes the ellipse of EllipticalContact.hpp.
 GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactFace& face,
                            const RelativeMotion& motion, PressureGeom& geom,
                            CurvatureModel model = CurvatureModel::Mean);

@@ -67,9 +67,7 @@ GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partne
   const Real a = std::sqrt(overlap * R);
   // (d - R2)(d + R2) rather than d^2 - R2^2: no cancellation when R2 is huge (a nearly flat triangle).
   const Vector3r c = rounded.sphereCentre + ((distance - R2) * (distance + R2) + R1 * R1) / (2 * distance) * n;
-  const bool elliptical = model == CurvatureModel::Principal;
-  if (!elliptical && missesContactCircle(rounded.circumcentre, rounded.circumradius, c, n, a))
-    return {Rejection::OutsideCircle};
+  if (missesContactCircle(rounded.circumcentre, rounded.circumradius, c, n, a)) return {Rejection::OutsideCircle};
 
   geom.tangent1 = n.unitOrthogonal();
   geom.tangent2 = n.cross(geom.tangent1);
@@ -84,6 +82,10 @@ GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partne
   }
   if (geom.polygon.empty()) return {Rejection::EmptyPolygon};
 
+  geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
+  const Real hSq = geom.effectivePoint.squaredNorm();
+  if (!(hSq < a * a)) return {Rejection::BeyondContactCircle};
+
   geom.triangle = triangle;
   geom.partnerTriangle = partner.triangle();
   geom.centre = c;
@@ -91,17 +93,12 @@ GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partne
   geom.radius = R;
   geom.sphereOverlap = overlap;
   geom.contactRadius = a;
+  geom.effectiveOverlap = overlap - R1 - R2 + std::sqrt(std::max(R1 * R1 - hSq, Real(0))) +
+                          std::sqrt(std::max(R2 * R2 - hSq, Real(0)));
   geom.elliptical = false;
-  if (elliptical) {
+  if (model == CurvatureModel::Principal) {
     const GeomTest ellipse = ellipticalContact(geom, triangleCap(mesh, triangle, geom), partner.cap(geom));
     if (!ellipse) return ellipse;
-  }
-  if (!geom.elliptical) {
-    geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
-    const Real hSq = geom.effectivePoint.squaredNorm();
-    if (!(hSq < a * a)) return {Rejection::BeyondContactCircle};
-    geom.effectiveOverlap = overlap - R1 - R2 + std::sqrt(std::max(R1 * R1 - hSq, Real(0))) +
-                            std::sqrt(std::max(R2 * R2 - hSq, Real(0)));
   }
   setRelativeVelocity(geom, motion);
   return {Rejection::None};

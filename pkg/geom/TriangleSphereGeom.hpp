@@ -47,7 +47,7 @@ struct PlacedTriangle {
   const Vector3r& translation;
 };
 
-// With CurvatureModel::Principal the circle tests give way to the ellipse of EllipticalContact.hpp.
+// With CurvatureModel::Principal a contact the circle accepts then takes the ellipse of EllipticalContact.hpp.
 GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const ContactSphere& sphere,
                             const RelativeMotion& motion, PressureGeom& geom,
                             CurvatureModel model = CurvatureModel::Mean);

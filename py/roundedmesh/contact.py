@@ -29,7 +29,7 @@ def body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel
 
 def sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel=_ZERO, ang_vel=_ZERO,
                    sphere_vel=_ZERO, sphere_ang_vel=_ZERO, gamma=10.0, regime="auto", friction="spring",
-                 curvature="mean"):
+                   curvature="mean"):
     """(force on the body, torque on it, force on the sphere, torque on it) of a rounded body against an
     analytic sphere of `radius` [m] centred at `centre` (what a YADE Sphere partner is)."""
     return _sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel, ang_vel, sphere_vel,
@@ -38,7 +38,7 @@ def sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_materia
 
 def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
                       vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto", friction="spring",
-                 curvature="mean"):
+                      curvature="mean"):
     """The triangle pairs in contact in body_contact's configuration, as a dict of numpy arrays with one row
     per pair. `mesh2` may instead be a number: the radius of an analytic sphere centred at pos2 (ori2 is then
     ignored). Columns:
@@ -52,7 +52,10 @@ def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2
         tangential_force         F_t on body 2 (rows of 3, global) [N]; body 1 receives the opposite. With the
                                  spring, each triangle's share of the pair's force (by its normal force) and twist
         sliding                  whether the pair's spring slides (viscous: whether Eq. 21 chose sliding)
-        node_forces1, node_forces2   Eq. 15 on each triangle's corners [N] (NaN for the analytic sphere)"""
+        node_forces1, node_forces2   Eq. 15 on each triangle's corners [N] (NaN for the analytic sphere)
+    With curvature='principal', an elliptical contact lists its approach delta as sphere_overlap, and as radius and
+    contact_radius those of the circle its ellipse is mapped to, sqrt(a b) (doc/physics.md, "Principal
+    curvatures")."""
     if isinstance(mesh2, (int, float)):
         listed = _sphere_contact(mesh1, pos1, ori1, pos2, float(mesh2), material1, material2, vel1, ang_vel1, vel2,
                                  ang_vel2, gamma, regime, True, friction, curvature)[4]
