@@ -46,11 +46,15 @@ GeomTest ellipticalContact(PressureGeom& geom, const CapCurvature& cap1, const C
   const Vector2r L = -(cap1.correction * cap1.base + cap2.correction * cap2.base);
   const Real C = 0.5 * (cap1.base.dot(cap1.correction * cap1.base) + cap2.base.dot(cap2.correction * cap2.base));
   // Eigenvalues of the symmetric K: mean -+ radius; v along lambdaB, u = v turned by -90 degrees along lambdaA.
-  const Real mean = 0.5 * (K(0, 0) + K(1, 1)), radius = std::hypot(0.5 * (K(0, 0) - K(1, 1)), 0.5 * (K(0, 1) + K(1, 0)));
+  const Real mean = 0.5 * (K(0, 0) + K(1, 1)), radius = std::hypot(0.5 * (K(0, 0) - K(1, 1)), K(0, 1));
   const Real lambdaA = mean - radius, lambdaB = mean + radius;
   if (!(lambdaB > 0.5 * (cap1.sphereCurvature + cap2.sphereCurvature))) return {Rejection::None};
-  const Real angle = 0.5 * std::atan2(K(0, 1) + K(1, 0), K(0, 0) - K(1, 1));
-  const Vector2r v(std::cos(angle), std::sin(angle)), u(v.y(), -v.x());
+  // An eigenvector of [[p, q], [q, r]] for lambdaB is (lambdaB - r, q) and (q, lambdaB - p): the first is the longer
+  // for p >= r. None for a circle: any axes do.
+  const Real q = 0.5 * (K(0, 1) + K(1, 0));
+  const Vector2r along = K(0, 0) >= K(1, 1) ? Vector2r(lambdaB - K(1, 1), q) : Vector2r(q, lambdaB - K(0, 0));
+  const Real length = along.norm();
+  const Vector2r v = length > 0 ? Vector2r(along / length) : Vector2r(Vector2r::UnitX()), u(v.y(), -v.x());
   // Along a flat direction (line contact) the overlap has no maximum: x* stays with the triangles along it.
   const bool line = !(lambdaA * kLineContactRatio > lambdaB);
   const Vector2r centre =
