@@ -4,7 +4,7 @@ built with YADE's Hertz-Mindlin contact law at the poses of the rounded bodies.
 
     clump_spheres(name, count)        centres [m] and radii [m] of a clump, in the shape's body frame
     shape_distance(name, points)      the shape's distance field f [m] at body-frame points [m]
-    body_frame(name, nodes)           the mesh, scale and frame of Mesh.reference_shape(name, nodes)
+    body_frame(name, nodes, curvature) the mesh, scale and frame of Mesh.reference_shape(name, nodes, curvature)
     mindlin_betan()                   YADE's damping ratio betan matched to the paper's Eq. 7 (dimensionless)
     add_clump(centres, radii, ...)    one clump of clump_spheres at a pose
     level_set_shape(name, ...)        the shape's YADE LevelSet
@@ -70,10 +70,11 @@ CLUMP_COUNTS = (10, 20, 40, 80)  # sphere counts of the speed-against-error stud
 
 # --- the shape's primitives and distance, in the body frame ------------------------------------------------
 
-def body_frame(name, nodes=None):
-    """(mesh, scale [m/unit], R (3, 3), centroid (3,) [m]) of Mesh.reference_shape(name, nodes): input point =
-    R body point + centroid = scale x."""
-    mesh, scale = shapes.mesh_with_scale(name, nodes)
+def body_frame(name, nodes=None, curvature="computed"):
+    """(mesh, scale [m/unit], R (3, 3), centroid (3,) [m]) of Mesh.reference_shape(name, nodes, curvature): input
+    point = R body point + centroid = scale x. curvature only sets the mesh's per-triangle curvatures (as for
+    reference_shape); the vertices, scale and frame are the same for both."""
+    mesh, scale = shapes.mesh_with_scale(name, nodes, curvature)
     return mesh, scale, np.array(mesh.orientation.toRotationMatrix()), np.array(mesh.centroid)
 
 

@@ -16,6 +16,10 @@ S5 -- non-spherical curvature (Section 3.2):
     S5_RATIOS, S5_SEMI_MINOR, S5_MAX_OVERLAP
     spheroid_mesh(ratio, nodes), spheroid_pair(ratio, nodes=2562, poses=3, seed=1) -> SpheroidSweep (Fig. 7)
     spheroid_mean_radius(ratio)
+    S5_CROSSING_ANGLES, spheroid_relative_radii(ratio, angle), spheroid_pair(ratio, ..., angle=phi)
+                                             crossed spheroids: long axes at phi in the contact plane (issue 13)
+    spheroid_pair(ratio, ..., mesh_curvature="computed")   curvatures estimated from the mesh
+    engine_options of every sweep go to the contact (gamma, regime, curvature="mean" | "principal")
     CYLINDER_RADIUS, CYLINDER_LENGTH, CYLINDER_OVERLAPS
     cylinder_mesh(nodes), cylinder_pair("crossed" | "parallel", nodes, poses, seed) -> CylinderSweep (Fig. 8)
     linear_fit(overlaps, forces) -> (slope [N/m], intercept [N]), power_law_exponent(overlaps, forces)
@@ -38,8 +42,9 @@ from yade.minieigenHP import Quaternion, Vector3
 
 from ._core import HertzMaterial, Mesh
 from .analytic import (approximate_elliptical_hertz_force, elliptical_hertz_force, hertz_force, nrmse,
-                       parallel_cylinders_force, spheroid_equator_radii, spheroid_pair_radii)
+                       parallel_cylinders_force, spheroid_equator_radii)
 from .contact import body_contact, sphere_contact
+from .hertz_reference import relative_principal_radii
 
 # --- pressing two bodies together -----------------------------------------------------------------------
 
@@ -78,7 +83,8 @@ def pressed_pair(mesh1, mesh2, overlaps, material, orientation1=Quaternion.Ident
     (h1 + h2 - delta) along the axis, so that the surfaces just touch at delta = 0. h1, h2 = `extents` [m] are
     how far body 1 reaches towards body 2 and body 2 back towards body 1 (give the analytic ones, e.g. R and
     R for two spheres); by default the mesh nodes' reach. Returns the force on body 2 along +axis, which is
-    positive when the bodies repel. material2 defaults to material; engine_options are gamma and regime."""
+    positive when the bodies repel. material2 defaults to material; engine_options are body_contact's gamma,
+    regime and curvature ('mean' or 'principal')."""
     direction = _AXES[axis]
     if extents is None:
         extents = (_extent(mesh1, orientation1, direction), _extent(mesh2, orientation2, -direction))
@@ -242,17 +248,20 @@ S5_SAMPLES = 50
 @functools.lru_cache(maxsize=None)
 def spheroid_mesh(ratio, nodes=2562, curvature="exact"):
     """Prolate spheroid with R_max/R_min = `ratio` at the equator: semi-axes a = sqrt(ratio) b along its axis,
-    b = S5_SEMI_MINOR across, about `nodes` nodes; cached (meshing takes 0.4 s at 642 nodes, 2.3 s at 2562)."""
+    b = S5_SEMI_MINOR across, about `nodes` nodes, curvatures 'exact' or 'computed' (Mesh.spheroid); cached
+    (meshing takes 0.4 s at 642 nodes, 2.3 s at 2562)."""
     return Mesh.spheroid(math.sqrt(ratio) * S5_SEMI_MINOR, S5_SEMI_MINOR, nodes, curvature=curvature)
 
 
 @dataclass
 class SpheroidSweep(PairSweep):
-    """S5 spheroid pair: PairSweep against the exact elliptical Hertz force, plus the reference the model is
-    built to reproduce, circular Hertz with each body's mean radius of curvature 1/H at the equator
-    (`circular`, error `circular_errors`), and Hale-type approximation (`approximate`)."""
+    """S5 spheroid pair (long axes at `angle` [rad]): PairSweep against the exact elliptical Hertz force, plus the
+    reference the paper's circular model is built to reproduce, circular Hertz with each body's mean radius of
+    curvature 1/H at the equator (`circular`, error `circular_errors`), and Hale-type approximation
+    (`approximate`)."""
     ratio: float = 1.0
     nodes: int = 0
+    angle: float = 0.0
     circular: np.ndarray = None
     approximate: np.ndarray = None
     circular_errors: np.ndarray = field(init=False)
@@ -274,21 +283,42 @@ def spheroid_mean_radius(ratio):
     return 2.0 / (1.0 / meridian + 1.0 / around)
 
 
-def spheroid_pair(ratio, nodes=2562, poses=3, seed=1, **engine_options):
-    """S5: two identical prolate spheroids (spheroid_mesh(ratio, nodes), curvature prescribed), long axes both
-    along x, pressed together along z at their equators, overlap delta = 2 b - centre distance from 0 to
-    S5_MAX_OVERLAP a in S5_SAMPLES steps, each body turned about its own axis by the angles of
-    axis_poses(poses, seed). References with E* = 0.5 Pa: exact elliptical Hertz with the pair's relative
-    radii (a^2/(2b), b/2); circular Hertz with R* = 1/(2H). Returns a SpheroidSweep."""
-    mesh = spheroid_mesh(ratio, nodes)
+# Crossed spheroid pairs (issue 13, ours): the same two spheroids with the long axis of body 2 turned by phi
+# about the pressing axis, in the contact plane. phi = 0 is Fig. 7's parallel pair; at phi = 90 deg the relative
+# curvature is the same in every direction (a circular contact whatever the ratio).
+S5_CROSSING_ANGLES = (math.pi / 4, math.pi / 2)     # [rad]
+
+
+def spheroid_relative_radii(ratio, angle=0.0):
+    """(r_major, r_minor) [m]: relative principal radii of two spheroid_mesh(ratio) bodies touching at their
+    equators with long axes at `angle` [rad] in the contact plane (hertz_reference.relative_principal_radii of
+    each body's equator curvatures (1/R_meridian, 1/R_around), the meridian direction being the long axis). At
+    angle 0 these are analytic.spheroid_pair_radii: (a^2/(2b), b/2)."""
+    meridian, around = spheroid_equator_radii(math.sqrt(ratio) * S5_SEMI_MINOR, S5_SEMI_MINOR)
+    curvatures = (1.0 / meridian, 1.0 / around)
+    return relative_principal_radii(curvatures, curvatures, angle)
+
+
+def spheroid_pair(ratio, nodes=2562, poses=3, seed=1, angle=0.0, mesh_curvature="exact", max_overlap=None,
+                  **engine_options):
+    """S5: two identical prolate spheroids (spheroid_mesh(ratio, nodes, mesh_curvature): 'exact', curvatures
+    prescribed, or 'computed', both principal curvatures estimated from the mesh), the long axis of body 1 along x
+    and that of body 2 at `angle` [rad] from it about z (0: parallel, Fig. 7; S5_CROSSING_ANGLES: crossed), pressed
+    together along z at their equators, overlap delta = 2 b - centre distance from 0 to max_overlap [m] (default
+    S5_MAX_OVERLAP a) in S5_SAMPLES steps, each body turned about its own axis by the angles of
+    axis_poses(poses, seed). engine_options go to body_contact (gamma, regime, curvature). References with
+    E* = 0.5 Pa: exact elliptical Hertz with the pair's relative radii (spheroid_relative_radii; (a^2/(2b), b/2)
+    parallel); circular Hertz with R* = 1/(2H), whatever the angle. Returns a SpheroidSweep."""
+    mesh = spheroid_mesh(ratio, nodes, mesh_curvature)
     a, b = math.sqrt(ratio) * S5_SEMI_MINOR, S5_SEMI_MINOR
-    overlaps = np.linspace(0, S5_MAX_OVERLAP * a, S5_SAMPLES + 1)[1:]
-    forces = [pressed_pair(mesh, mesh, overlaps, PAIR_MATERIAL, _aligned(mesh, 0, angle1), _aligned(mesh, 0, angle2),
-                           extents=(b, b), **engine_options)
+    overlaps = np.linspace(0, S5_MAX_OVERLAP * a if max_overlap is None else max_overlap, S5_SAMPLES + 1)[1:]
+    crossing = Quaternion(Vector3(0, 0, 1), angle)
+    forces = [pressed_pair(mesh, mesh, overlaps, PAIR_MATERIAL, _aligned(mesh, 0, angle1),
+                           crossing * _aligned(mesh, 0, angle2), extents=(b, b), **engine_options)
               for angle1, angle2 in axis_poses(poses, seed)]
-    r_major, r_minor = spheroid_pair_radii(a, b)
+    r_major, r_minor = spheroid_relative_radii(ratio, angle)
     return SpheroidSweep(overlaps, np.array(forces), elliptical_hertz_force(PAIR_MODULUS, r_major, r_minor, overlaps),
-                         search_limit(mesh, mesh), ratio=ratio, nodes=len(mesh.vertices),
+                         search_limit(mesh, mesh), ratio=ratio, nodes=len(mesh.vertices), angle=angle,
                          circular=hertz_force(PAIR_MODULUS, spheroid_mean_radius(ratio) / 2, overlaps),
                          approximate=approximate_elliptical_hertz_force(PAIR_MODULUS, r_major, r_minor, overlaps))
 
