@@ -4,7 +4,8 @@ and plain spheres of the volume-equivalent radius, each with YADE's Hertz-Mindli
 figures our engine's speed is stated against.
 
     /usr/bin/python3 scripts/bench_s1_peers.py [--poses bench/data/s1_settled.csv]
-        [--peers roundedmesh clumps spheres [levelset]] [--nodes N] [--regime auto] [--count 40]
+        [--peers roundedmesh clumps spheres [levelset] [roundedmesh-principal]] [--nodes N] [--regime auto]
+        [--count 40]
         [--spacing 1e-3] [--surface-nodes 511]
         [--level-set-verlet 0] [--warmup 100] [--blocks 5] [--block-steps 200] [--min-block-seconds 2]
         [--output out/bench_s1_peers/peers.csv]
@@ -12,7 +13,8 @@ figures our engine's speed is stated against.
 One process, one thread (the script restarts itself with OMP_NUM_THREADS=1 if that is not set), one
 representation after the other: build at the poses (O is reset), run --warmup steps, then time --blocks blocks
 (roundedmesh.benchmarking.step_times_ms) and one more block with YADE's per-engine timing (O.timingEnabled).
-Level sets are opt-in (--peers ... levelset): they cost tens of ms per step.
+Level sets are opt-in (--peers ... levelset): they cost tens of ms per step. roundedmesh-principal is roundedmesh
+with rm.engine(curvature='principal'), the elliptical contact (issue 13).
 
 Blocks last at least --min-block-seconds of CPU time (more steps than --block-steps if need be): O.run(n, True)
 returns on YADE's 40 ms polling of the running loop, so a short block's wall time is rounded up by as much
@@ -177,7 +179,7 @@ def main(argv):
     parser.add_argument("--poses", default="bench/data/s1_settled.csv")
     parser.add_argument("--shape", default="gummy_bear")
     parser.add_argument("--peers", nargs="+", default=["roundedmesh", "clumps", "spheres"],
-                        choices=["roundedmesh", "clumps", "levelset", "spheres"])
+                        choices=["roundedmesh", "clumps", "levelset", "spheres", "roundedmesh-principal"])
     parser.add_argument("--nodes", type=int, default=None,
                         help="nodes of the roundedmesh meshes (Mesh.reference_shape; default its own)")
     parser.add_argument("--regime", default="auto", choices=("auto", "quadrature", "direct"),
@@ -212,6 +214,9 @@ def main(argv):
         "roundedmesh": (f"roundedmesh, {args.shape} meshes of {args.nodes or 'the default'} nodes, "
                         f"regime {args.regime}",
                         lambda: peers.build_rounded(poses, args.shape, args.nodes, regime=args.regime)),
+        "roundedmesh-principal": (f"roundedmesh, principal curvatures, regime {args.regime}",
+                                  lambda: peers.build_rounded(poses, args.shape, args.nodes, regime=args.regime,
+                                                              curvature="principal")),
         "clumps": (f"clumps of {args.count} spheres", lambda: peers.build_clumps(poses, args.count, args.shape)),
         "levelset": (f"level sets ({args.surface_nodes} rays, grid {args.spacing * 1e3:g} mm)",
                      lambda: peers.build_level_sets(poses, args.shape, args.spacing, args.surface_nodes,

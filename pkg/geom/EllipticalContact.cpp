@@ -23,9 +23,9 @@ CapCurvature triangleCap(const RoundedMesh& mesh, int triangle, const PressureGe
   // d1 projected on the plane, and its perpendicular there: the curvatures are kept exactly, so that a
   // flat direction stays flat and an isotropic triangle isotropic however the triangle is tilted.
   const Vector3r d1 = rotation * k.d1;
-  const Vector2r u = Vector2r(d1.dot(geom.tangent1), d1.dot(geom.tangent2)).normalized(), v(-u.y(), u.x());
+  const Vector2r u = Vector2r(d1.dot(geom.tangent1), d1.dot(geom.tangent2)).normalized();
   CapCurvature cap;
-  cap.curvature = k.k1 * u * u.transpose() + k.k2 * v * v.transpose();
+  cap.curvature = k.k2 * Matrix2r::Identity() + (k.k1 - k.k2) * u * u.transpose();
   cap.correction = Matrix2r::Identity() / r.radius - cap.curvature;
   const Vector3r offset = rotation * r.circumcentre + translation - geom.centre;
   cap.base = Vector2r(offset.dot(geom.tangent1), offset.dot(geom.tangent2));
@@ -46,7 +46,8 @@ GeomTest ellipticalContact(PressureGeom& geom, const CapCurvature& cap1, const C
   const Vector2r L = -(cap1.correction * cap1.base + cap2.correction * cap2.base);
   const Real C = 0.5 * (cap1.base.dot(cap1.correction * cap1.base) + cap2.base.dot(cap2.correction * cap2.base));
   // Eigenvalues of the symmetric K: mean -+ radius; v along lambdaB, u = v turned by -90 degrees along lambdaA.
-  const Real mean = 0.5 * (K(0, 0) + K(1, 1)), radius = std::hypot(0.5 * (K(0, 0) - K(1, 1)), K(0, 1));
+  const Real mean = 0.5 * (K(0, 0) + K(1, 1));
+  const Real radius = std::sqrt(0.25 * (K(0, 0) - K(1, 1)) * (K(0, 0) - K(1, 1)) + K(0, 1) * K(0, 1));
   const Real lambdaA = mean - radius, lambdaB = mean + radius;
   if (!(lambdaB > 0.5 * (cap1.sphereCurvature + cap2.sphereCurvature))) return {Rejection::None};
   // An eigenvector of [[p, q], [q, r]] for lambdaB is (lambdaB - r, q) and (q, lambdaB - p): the first is the longer
