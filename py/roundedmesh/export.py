@@ -7,7 +7,9 @@
     write_spheres_vtp(path)  YADE's Spheres of the scene (partners or not, clump members too) as points;
                              point data: body id, radius [m], velocity [m/s]; ParaView's Glyph filter (sphere,
                              scale by "radius", factor 2) draws them
-    write_mesh_vtp(mesh, path)  one Mesh in its own (principal) frame; cell data: radius, curvature;
+    write_mesh_vtp(mesh, path)  one Mesh in its own (principal) frame; cell data: radius, curvature,
+                             principal_curvatures (k1, k2) [1/m], principal_direction (of k1; kept out of
+                             the scene's frames, which they would double);
                              point data: node curvature computed from the mesh (Eq. 1)
     write_csv(path, header, rows)  a table of results, one header row then the rows (the CSV beside each plot)
     VtkSeries(directory, spheres=False)  numbered .vtp files plus a .pvd collection indexed by simulated
@@ -145,8 +147,9 @@ def write_spheres_vtp(path):
 
 def write_mesh_vtp(mesh, path):
     """Writes `mesh` in its principal frame to `path` (.vtp) with its curvature, and returns the path."""
-    return _write_polydata(path, mesh.vertices, mesh.triangles, {"radius": mesh.radii, "curvature": mesh.curvatures},
-                           {"node_curvature": mesh.node_curvatures})
+    cells = {"radius": mesh.radii, "curvature": mesh.curvatures, "principal_curvatures": mesh.principal_curvatures,
+             "principal_direction": mesh.principal_directions}
+    return _write_polydata(path, mesh.vertices, mesh.triangles, cells, {"node_curvature": mesh.node_curvatures})
 
 
 class VtkSeries:

@@ -76,6 +76,8 @@ def test_a_mesh_alone_with_its_curvature(tmp_path, monkeypatch):
         np.testing.assert_array_equal(arrays["connectivity"].reshape(-1, 3), mesh.triangles)
         np.testing.assert_array_equal(arrays["curvature"], mesh.curvatures)
         np.testing.assert_array_equal(arrays["node_curvature"], mesh.node_curvatures)
+        np.testing.assert_array_equal(arrays["principal_curvatures"], mesh.principal_curvatures)
+        np.testing.assert_array_equal(arrays["principal_direction"], mesh.principal_directions)
         assert piece.find("PointData") is not None
 
 
