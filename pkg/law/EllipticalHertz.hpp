@@ -19,7 +19,8 @@
 // the force continuous as two cylinders turn parallel. Mesh noise (tilted triangles) leaves ratios of 10^3 to
 // 10^5 on parallel cylinders: line contacts.
 // The eccentricity comes from a table over ln(lambdaB / lambdaA) built once from std::comp_ellint_1/2 (2048
-// intervals up to kLineContactRatio; linear interpolation, relative error below 1e-5, tested against scipy).
+// intervals up to kLineContactRatio; linear interpolation, relative error below 1e-5, tested against Hertz's equations
+// solved independently in EllipticalContactTest).
 #pragma once
 
 #include "pkg/common/Types.hpp"

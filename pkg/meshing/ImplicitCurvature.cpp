@@ -5,9 +5,10 @@ namespace roundedmesh {
 SurfaceCurvatures implicitSurfaceCurvatures(const ImplicitSolid& solid, const TriangleSurface& scaledSurface,
                                             Real scale, Real step) {
   SurfaceCurvatures out;
-  for (const Triangle& t : scaledSurface.triangles) {
-    const Vector3r &a = scaledSurface.vertices[t[0]], &b = scaledSurface.vertices[t[1]], &c = scaledSurface.vertices[t[2]];
-    const Vector3r x = projectOnSurface(solid, (a + b + c) / (3 * scale));
+  for (int t = 0; t < static_cast<int>(scaledSurface.triangles.size()); ++t) {
+    const Triangle& corners = scaledSurface.triangles[t];
+    const Vector3r x = projectOnSurface(solid, (scaledSurface.vertices[corners[0]] + scaledSurface.vertices[corners[1]] +
+                                                scaledSurface.vertices[corners[2]]) / (3 * scale));
     Vector3r gradient;
     Matrix3r hessian;
     const Real centre = solid.f(x);
@@ -22,10 +23,7 @@ SurfaceCurvatures implicitSurfaceCurvatures(const ImplicitSolid& solid, const Tr
             (solid.f(x + ei + ej) - solid.f(x + ei - ej) - solid.f(x - ei + ej) + solid.f(x - ei - ej)) / (4 * step * step);
       }
     }
-    const Vector3r n = gradient.normalized();
-    const Matrix3r P = Matrix3r::Identity() - n * n.transpose();
-    const Matrix3r shapeOperator = P * hessian * P / (gradient.norm() * scale);
-    const PrincipalCurvature k = principalCurvature(shapeOperator, n, (b - a).cross(c - a).normalized());
+    const PrincipalCurvature k = implicitPrincipalCurvature(gradient, hessian, triangleNormal(scaledSurface, t), scale);
     out.principal.push_back(k);
     out.mean.push_back(k.mean());
   }

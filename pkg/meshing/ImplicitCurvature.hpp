@@ -1,9 +1,8 @@
 // The curvature of a smooth implicit surface f = 0 under each triangle of a mesh of it: what the generators
 // prescribe with curvature='exact' for the reference shapes (BlendedShape.hpp). At the point of f = 0 that Newton
-// steps along grad f reach from the triangle's centroid, the shape operator P Hess(f) P / |grad f| (P: projection on
-// the tangent plane; R. Goldman, Comput. Aided Geom. Des. 22 (2005) 632-658), with the gradient and Hessian by
-// central differences of step `step` [shape units]; its principal curvatures in the triangle's plane
-// (PrincipalCurvature.hpp) and their mean. The mesh may be the surface scaled by `scale` [m per shape unit]:
+// steps along grad f reach from the triangle's centroid, its principal curvatures in the triangle's plane
+// (implicitPrincipalCurvature, PrincipalCurvature.hpp) from the gradient and Hessian by central differences of step
+// `step` [shape units], and their mean. The mesh may be the surface scaled by `scale` [m per shape unit]:
 // curvatures come out in 1/m.
 #pragma once
 

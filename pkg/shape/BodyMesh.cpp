@@ -39,8 +39,8 @@ BodyMesh::BodyMesh(const TriangleSurface& surface, const std::optional<std::vect
   if (prescribedPrincipal) {
     principal = std::move(*prescribedPrincipal);
   } else if (prescribedCurvatures) {
-    for (std::size_t t = 0; t < surface.triangles.size(); ++t)
-      principal.push_back(PrincipalCurvature::isotropic((*prescribedCurvatures)[t], Vector3r::UnitZ()));
+    for (int t = 0; t < static_cast<int>(surface.triangles.size()); ++t)
+      principal.push_back(PrincipalCurvature::isotropic((*prescribedCurvatures)[t], triangleNormal(surface, t)));
   } else {
     principal = principalCurvatures(surface);
   }

@@ -114,10 +114,6 @@ TriangleSurface cylinderSurface(Real radius, Real length, int nodes) {
 
 namespace {
 
-Vector3r triangleNormal(const TriangleSurface& surface, const Triangle& t) {
-  return (surface.vertices[t[1]] - surface.vertices[t[0]]).cross(surface.vertices[t[2]] - surface.vertices[t[0]]).normalized();
-}
-
 bool onCap(const Vector3r& normal) { return std::abs(normal.z()) > 0.5; }
 
 }  // namespace
@@ -125,14 +121,15 @@ bool onCap(const Vector3r& normal) { return std::abs(normal.z()) > 0.5; }
 std::vector<Real> cylinderTriangleCurvatures(Real radius, const TriangleSurface& surface) {
   std::vector<Real> curvatures;
   curvatures.reserve(surface.triangles.size());
-  for (const Triangle& t : surface.triangles) curvatures.push_back(onCap(triangleNormal(surface, t)) ? 0 : 1 / (2 * radius));
+  for (int t = 0; t < static_cast<int>(surface.triangles.size()); ++t)
+    curvatures.push_back(onCap(triangleNormal(surface, t)) ? 0 : 1 / (2 * radius));
   return curvatures;
 }
 
 std::vector<PrincipalCurvature> cylinderTrianglePrincipalCurvatures(Real radius, const TriangleSurface& surface) {
   std::vector<PrincipalCurvature> out;
   out.reserve(surface.triangles.size());
-  for (const Triangle& t : surface.triangles) {
+  for (int t = 0; t < static_cast<int>(surface.triangles.size()); ++t) {
     const Vector3r n = triangleNormal(surface, t);
     const Vector3r around = Vector3r::UnitZ().cross(n);
     out.push_back(onCap(n) ? PrincipalCurvature::isotropic(0, n)

@@ -32,14 +32,21 @@ PrincipalCurvature principalCurvature(const Matrix3r& shapeOperator, const Vecto
   return {mean + radius, mean - radius, d1.normalized()};
 }
 
+PrincipalCurvature implicitPrincipalCurvature(const Vector3r& gradient, const Matrix3r& hessian,
+                                              const Vector3r& triangleNormal, Real scale) {
+  const Vector3r n = gradient.normalized();
+  const Matrix3r P = Matrix3r::Identity() - n * n.transpose();
+  return principalCurvature(P * hessian * P / (gradient.norm() * scale), n, triangleNormal);
+}
+
 std::vector<PrincipalCurvature> principalCurvatures(const TriangleSurface& surface) {
   const std::vector<Vector3r> normals = vertexNormals(surface);
   std::vector<PrincipalCurvature> out;
   out.reserve(surface.triangles.size());
-  for (const Triangle& t : surface.triangles) {
-    const Vector3r &x0 = surface.vertices[t[0]], &x1 = surface.vertices[t[1]], &x2 = surface.vertices[t[2]];
-    const Vector3r n = (x1 - x0).cross(x2 - x0).normalized();
-    const Vector3r u = (x1 - x0).normalized(), v = n.cross(u);
+  for (int face = 0; face < static_cast<int>(surface.triangles.size()); ++face) {
+    const Triangle& t = surface.triangles[face];
+    const Vector3r n = triangleNormal(surface, face);
+    const Vector3r u = (surface.vertices[t[1]] - surface.vertices[t[0]]).normalized(), v = n.cross(u);
     // Unknowns (e, f, g) of II = [[e, f], [f, g]] in the frame (u, v); two equations per edge.
     Eigen::Matrix<Real, 6, 3> A;
     Eigen::Matrix<Real, 6, 1> b;
@@ -54,7 +61,7 @@ std::vector<PrincipalCurvature> principalCurvatures(const TriangleSurface& surfa
       b(2 * i + 1) = dn.dot(v);
     }
     const Vector3r efg = (A.transpose() * A).ldlt().solve(A.transpose() * b);
-    Matrix3r shapeOperator = efg(0) * u * u.transpose() + efg(1) * (u * v.transpose() + v * u.transpose()) +
+    const Matrix3r shapeOperator = efg(0) * u * u.transpose() + efg(1) * (u * v.transpose() + v * u.transpose()) +
                              efg(2) * v * v.transpose();
     out.push_back(principalCurvature(shapeOperator, n, n));
   }

@@ -41,6 +41,13 @@ std::vector<PrincipalCurvature> principalCurvatures(const TriangleSurface& surfa
 PrincipalCurvature principalCurvature(const Matrix3r& shapeOperator, const Vector3r& normal,
                                       const Vector3r& triangleNormal);
 
+// The principal curvatures of an implicit surface f = 0 at a point, from grad f and Hess f there: the shape operator
+// P Hess(f) P / |grad f| (P: projection on the tangent plane; R. Goldman, Comput. Aided Geom. Des. 22 (2005)
+// 632-658) through principalCurvature above, divided by `scale` when f's lengths are scale times smaller than the
+// mesh's (shape units against metres).
+PrincipalCurvature implicitPrincipalCurvature(const Vector3r& gradient, const Matrix3r& hessian,
+                                              const Vector3r& triangleNormal, Real scale = 1);
+
 // Max's vertex normals: the sum over the incident triangles of (e1 x e2) / (|e1|^2 |e2|^2), normalised.
 std::vector<Vector3r> vertexNormals(const TriangleSurface& surface);
 

@@ -52,16 +52,9 @@ std::vector<PrincipalCurvature> spheroidTrianglePrincipalCurvatures(Real a, Real
   const Vector3r hessian(2 / (b * b), 2 / (b * b), 2 / (a * a));
   const std::vector<Vector3r> points = surfacePoints(a, b, surface);
   std::vector<PrincipalCurvature> out;
-  for (std::size_t t = 0; t < points.size(); ++t) {
-    const Vector3r gradient = hessian.cwiseProduct(points[t]);
-    const Vector3r n = gradient.normalized();
-    const Matrix3r P = Matrix3r::Identity() - n * n.transpose();
-    const Matrix3r shapeOperator = P * hessian.asDiagonal() * P / gradient.norm();
-    const Triangle& c = surface.triangles[t];
-    const Vector3r normal =
-        (surface.vertices[c[1]] - surface.vertices[c[0]]).cross(surface.vertices[c[2]] - surface.vertices[c[0]]);
-    out.push_back(principalCurvature(shapeOperator, n, normal.normalized()));
-  }
+  for (int t = 0; t < static_cast<int>(points.size()); ++t)
+    out.push_back(implicitPrincipalCurvature(hessian.cwiseProduct(points[t]), Matrix3r(hessian.asDiagonal()),
+                                             triangleNormal(surface, t)));
   return out;
 }
 

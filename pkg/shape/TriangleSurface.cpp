@@ -10,6 +10,12 @@ Real triangleArea(const TriangleSurface& s, int t) {
   return 0.5 * (b - a).cross(c - a).norm();
 }
 
+Vector3r triangleNormal(const TriangleSurface& s, int t) {
+  const Triangle& corners = s.triangles[t];
+  const Vector3r &a = s.vertices[corners[0]], &b = s.vertices[corners[1]], &c = s.vertices[corners[2]];
+  return (b - a).cross(c - a).normalized();
+}
+
 std::vector<Real> triangleAreas(const TriangleSurface& surface) {
   std::vector<Real> areas(surface.triangles.size());
   for (std::size_t t = 0; t < areas.size(); ++t) areas[t] = triangleArea(surface, static_cast<int>(t));

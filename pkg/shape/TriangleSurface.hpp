@@ -20,6 +20,8 @@ struct TriangleSurface {
 // Area of triangle t [m^2], and of every triangle.
 Real triangleArea(const TriangleSurface& surface, int t);
 std::vector<Real> triangleAreas(const TriangleSurface& surface);
+// Outward unit normal of triangle t (corners counter-clockwise seen from outside).
+Vector3r triangleNormal(const TriangleSurface& surface, int t);
 
 // Whether the triangle a, b, c has no area worth the name: twice its area at most 1e-12 of its longest edge
 // squared. Relative, so that it holds at any scale; round-off of any sensible triangle is far above it.
