@@ -98,6 +98,7 @@ struct PairRecord {
   bool flat = false;       // whether the other side is a Wall, Plane, Facet or Box
   Real side = 0;           // then: where the body's centre is against it [m] (StopRules.cpp, faceSide)
   Vector3r position = Vector3r::Zero();  // the body's centre [m]
+  Vector3r point = Vector3r::Zero();     // the pair's centre of pressure [m] (PairSummary::point), if they touched
 };
 
 // Why a step must not be kept (StopRules.hpp): the body's centre crossed the other side's face since the last
@@ -108,6 +109,7 @@ struct StopReason {
   int body, other;  // engine indices
   Real overlap;     // how far the bodies overlap [m] (PairSummary::depth; 0 if they no longer touch)
   Real size;        // the size the overlap is measured by [m]
+  Vector3r point;   // where: the pair's centre of pressure [m], or the body's centre if they no longer touch
 };
 
 // The outcome of one pair: the wrench on each side (global frame, torque about each one's position).

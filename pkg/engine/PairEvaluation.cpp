@@ -25,22 +25,25 @@ PairEvaluation evaluate(ContactModel& model, const std::vector<BodyState>& bodie
 
 }  // namespace
 
+PairEvaluation partnerContact(const RoundedBody& body, const BodyState& state, const PartnerShape& partner,
+                              const BodyState& partnerState, const HertzMaterial& partnerMaterial,
+                              const PressureOptions& options, bool details, FrictionLaw friction) {
+  ContactModel model;
+  model.bodies.push_back(body);
+  model.partners.push_back({-1, partner, partnerMaterial});
+  return evaluate(model, {state}, {partnerState}, options, details, friction);
+}
+
 PairEvaluation planeContact(const RoundedBody& body, const BodyState& state, const Plane& plane,
                             const HertzMaterial& planeMaterial, const PressureOptions& options, bool details,
                             FrictionLaw friction) {
-  ContactModel model;
-  model.bodies.push_back(body);
-  model.partners.push_back({-1, plane, planeMaterial});
-  return evaluate(model, {state}, {BodyState()}, options, details, friction);
+  return partnerContact(body, state, plane, BodyState(), planeMaterial, options, details, friction);
 }
 
 PairEvaluation sphereContact(const RoundedBody& body, const BodyState& state, const Sphere& sphere,
                              const BodyState& sphereState, const HertzMaterial& sphereMaterial,
                              const PressureOptions& options, bool details, FrictionLaw friction) {
-  ContactModel model;
-  model.bodies.push_back(body);
-  model.partners.push_back({-1, sphere, sphereMaterial});
-  return evaluate(model, {state}, {sphereState}, options, details, friction);
+  return partnerContact(body, state, sphere, sphereState, sphereMaterial, options, details, friction);
 }
 
 PairEvaluation bodyContact(const RoundedBody& first, const BodyState& firstState, const RoundedBody& second,

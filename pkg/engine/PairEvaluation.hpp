@@ -1,6 +1,6 @@
 // One contact evaluated once, without a scene, through the engine's own stages (resolvePair): a rounded body
-// against a plane, against an analytic sphere, or against another rounded body. What rm.plane_contact,
-// rm.sphere_contact, rm.body_contact and rm.triangle_contacts return, for validation and for looking inside a
+// against a partner (a plane, a YADE Wall, Box, Facet or analytic Sphere), or against another rounded body. What
+// rm.plane_contact, rm.partner_contact, rm.sphere_contact, rm.body_contact and rm.triangle_contacts return, for validation and for looking inside a
 // contact. Forces [N] and torques [N m] global, each torque about its own body's position; with `details`, every
 // triangle contact as resolvePair sees it. `friction`: the tangential law; the spring of FrictionLaw::Spring starts
 // here, so only its damping acts (a contact with no history). Throws std::invalid_argument naming a material parameter out of range.
@@ -16,6 +16,12 @@ struct PairEvaluation {
   Wrench onFirst, onSecond;
   std::vector<TriangleContact> contacts;  // filled only with `details`
 };
+
+// Against any partner in `partnerState` (a Wall's position, a Box's or a Facet's pose, a sphere's centre).
+PairEvaluation partnerContact(const RoundedBody& body, const BodyState& state, const PartnerShape& partner,
+                              const BodyState& partnerState, const HertzMaterial& partnerMaterial,
+                              const PressureOptions& options, bool details = false,
+                              FrictionLaw friction = FrictionLaw::Spring);
 
 PairEvaluation planeContact(const RoundedBody& body, const BodyState& state, const Plane& plane,
                             const HertzMaterial& planeMaterial, const PressureOptions& options, bool details = false,

@@ -73,8 +73,10 @@ void checkStopRules(const ContactModel& model, ContactData& data) {
     PairRecord& r = records[k];
     r.body = pair.body;
     r.other = pair.other;
-    r.overlap = data.pairResults[k].summary.triangleContacts > 0 ? data.pairResults[k].summary.depth : 0;
+    const PairSummary& summary = data.pairResults[k].summary;
+    r.overlap = summary.triangleContacts > 0 ? summary.depth : 0;
     r.position = data.state(pair.body).position;
+    r.point = summary.triangleContacts > 0 ? summary.point : r.position;
     const PartnerShape* shape = partnerShape(model, pair.other);
     r.flat = shape && isFlat(*shape);
     r.side = r.flat ? faceSide(*shape, data.state(pair.other), r.position) : 0;
@@ -87,7 +89,7 @@ void checkStopRules(const ContactModel& model, ContactData& data) {
     if (!(r.overlap > model.stopOverlap * size)) continue;
     const auto found = std::lower_bound(last.begin(), last.end(), r, before);
     const Real previous = found != last.end() && !before(r, *found) ? found->overlap : 0;
-    if (r.overlap > previous) data.stops.push_back({StopCause::Overlap, r.body, r.other, r.overlap, size});
+    if (r.overlap > previous) data.stops.push_back({StopCause::Overlap, r.body, r.other, r.overlap, size, r.point});
   }
   // Every flat partner a body was near in the last step, whether or not their bounds still overlap.
   for (const PairRecord& r : last) {
@@ -97,8 +99,9 @@ void checkStopRules(const ContactModel& model, ContactData& data) {
     const Vector3r& now = data.state(r.body).position;
     if (crossed(shape, partner, r.position, r.side, now, faceSide(shape, partner, now))) {
       const auto found = std::lower_bound(records.begin(), records.end(), r, before);
-      const Real overlap = found != records.end() && !before(r, *found) ? found->overlap : 0;
-      data.stops.push_back({StopCause::CentreCrossed, r.body, r.other, overlap, sideSize(model, r.body)});
+      const bool touching = found != records.end() && !before(r, *found);
+      data.stops.push_back({StopCause::CentreCrossed, r.body, r.other, touching ? found->overlap : 0,
+                            sideSize(model, r.body), touching ? found->point : now});
     }
   }
   // Crossings first, then the deepest overlap for its size.

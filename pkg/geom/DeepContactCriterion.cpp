@@ -6,19 +6,16 @@
 namespace roundedmesh {
 namespace {
 
-// How far x (body 1's frame) may lie outside body 2's flat solid and still be in its rounded one.
 bool inBody2(const PlacedMesh& body2, const Vector3r& x, Real slack = 0) {
-  const SolidDistance& solid = body2.mesh.solidDistance();
-  return solid.at(body2.rotation.transpose() * (x - body2.translation)) <=
-         body2.mesh.maxCapHeight() + solid.tolerance() + slack;
-}
-
-bool inBody1(const RoundedMesh& mesh1, const Vector3r& x) {
-  const SolidDistance& solid = mesh1.solidDistance();
-  return solid.at(x) <= mesh1.maxCapHeight() + solid.tolerance();
+  return insideRoundedSolid(body2.mesh, body2.rotation.transpose() * (x - body2.translation), slack);
 }
 
 }  // namespace
+
+bool insideRoundedSolid(const RoundedMesh& mesh, const Vector3r& x, Real slack) {
+  const SolidDistance& solid = mesh.solidDistance();
+  return solid.at(x) <= mesh.maxCapHeight() + solid.tolerance() + slack;
+}
 
 bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom) {
   const RoundedTriangle& p = mesh1.rounded(s);
@@ -30,7 +27,7 @@ bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2,
   const Vector3r q1 = p.sphereCentre + lateral + std::sqrt(std::max(p.radius * p.radius - hSq, Real(0))) * geom.normal;
   const Vector3r q2 = sphere2 + lateral - std::sqrt(std::max(q.radius * q.radius - hSq, Real(0))) * geom.normal;
   const Vector3r middle = 0.5 * (q1 + q2);
-  return inBody2(body2, q1) && inBody2(body2, middle) && inBody1(mesh1, q2) && inBody1(mesh1, middle);
+  return inBody2(body2, q1) && inBody2(body2, middle) && insideRoundedSolid(mesh1, q2) && insideRoundedSolid(mesh1, middle);
 }
 
 bool capReaches(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, Real slack) {

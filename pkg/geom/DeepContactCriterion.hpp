@@ -25,6 +25,10 @@ struct PlacedMesh {
   const Vector3r& translation;
 };
 
+// Whether x (the mesh's frame) lies in the mesh's rounded solid: within its tallest cap of the flat solid, up to the
+// distance field's tolerance (and `slack` [m] more).
+bool insideRoundedSolid(const RoundedMesh& mesh, const Vector3r& x, Real slack = 0);
+
 // The segment test for triangle s of mesh1 and triangle t of body 2 in contact as `geom` (body 1's frame).
 bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom);
 

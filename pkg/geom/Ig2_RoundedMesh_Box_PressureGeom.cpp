@@ -1,52 +1,45 @@
 #include "pkg/geom/Ig2_RoundedMesh_Box_PressureGeom.hpp"
 
 #include <array>
-#include <limits>
 
 namespace roundedmesh {
 
 void Ig2_RoundedMesh_Box_PressureGeom(const RoundedMesh& mesh, const Box& box, const Vector3r& centre,
                                       const Matrix3r& orientation, const RelativeMotion& motion,
                                       GeomOutput out, CurvatureModel model) {
-  // Face f = 2 * axis + (outward normal along -axis ? 1 : 0); t1 x t2 = n12 = -outward normal.
-  std::array<ContactFace, 6> faces;
-  std::array<ConvexPolygon, 6> outlines;
-  for (int axis = 0; axis < 3; ++axis) {
-    const int j = (axis + 1) % 3, k = (axis + 2) % 3;
-    for (int negative = 0; negative < 2; ++negative) {
-      const int f = 2 * axis + negative;
-      const Real sign = negative ? -1 : 1;
-      const int u = negative ? j : k, v = negative ? k : j;
-      ContactFace& face = faces[f];
-      face.origin = centre + sign * box.halfExtents[axis] * orientation.col(axis);
-      face.normal = -sign * orientation.col(axis);
-      face.tangent1 = orientation.col(u);
-      face.tangent2 = orientation.col(v);
-      outlines[f] = ConvexPolygon::rectangle(Vector2r::Zero(), box.halfExtents[u], box.halfExtents[v]);
-      face.faceOutline = &outlines[f];
+  // The body's centre (body 1's origin) in the box's axes, and how far it lies outside face f = 2 * axis +
+  // (outward normal along -axis ? 1 : 0).
+  const Vector3r bodyCentre = -orientation.transpose() * centre;
+  auto height = [&](int f) { return (f % 2 ? -bodyCentre[f / 2] : bodyCentre[f / 2]) - box.halfExtents[f / 2]; };
+  int leastDeep = 0;
+  for (int f = 1; f < 6; ++f)
+    if (height(f) > height(leastDeep)) leastDeep = f;
+  for (int f = 0; f < 6; ++f) {
+    if (!(height(f) > 0) && f != leastDeep) continue;
+    const int axis = f / 2, u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const Real sign = f % 2 ? -1 : 1;
+    // The face's plane takes the in-plane axes a Plane with its normal takes, so that a contact inside the face is
+    // computed as a Wall's, to round-off.
+    ContactFace face;
+    face.origin = centre + sign * box.halfExtents[axis] * orientation.col(axis);
+    face.normal = -sign * orientation.col(axis);
+    face.tangent1 = face.normal.unitOrthogonal();
+    face.tangent2 = face.normal.cross(face.tangent1);
+    std::array<Vector2r, 4> corners;
+    const std::array<Vector2r, 4> signs = {Vector2r(1, 1), Vector2r(-1, 1), Vector2r(-1, -1), Vector2r(1, -1)};
+    for (int i = 0; i < 4; ++i) {
+      const Vector3r x = signs[i].x() * box.halfExtents[u] * orientation.col(u) +
+                         signs[i].y() * box.halfExtents[v] * orientation.col(v);
+      corners[i] = Vector2r(x.dot(face.tangent1), x.dot(face.tangent2));
     }
+    // Counter-clockwise about n12.
+    const Vector2r e1 = corners[1] - corners[0], e2 = corners[2] - corners[0];
+    if (e1.x() * e2.y() - e1.y() * e2.x() < 0) std::swap(corners[1], corners[3]);
+    ConvexPolygon outline;
+    for (const Vector2r& c : corners) outline.push(c);
+    face.faceOutline = &outline;
+    faceGeometry(mesh, face, motion, out, model);
   }
-
-  const AlignedBox3r boxInBodyFrame = transformedBox(AlignedBox3r(-box.halfExtents, box.halfExtents), orientation, centre);
-  PressureGeom geom;
-  mesh.tree().query([&](const AlignedBox3r& b) { return b.intersects(boxInBodyFrame); }, [&](int t) {
-    const Vector3r local = orientation.transpose() * (mesh.rounded(t).sphereCentre - centre);
-    int nearestFace = 0;
-    Real nearestHeight = -std::numeric_limits<Real>::infinity();
-    bool outside = false;
-    for (int f = 0; f < 6; ++f) {
-      const int axis = f / 2;
-      const Real height = (f % 2 ? -local[axis] : local[axis]) - box.halfExtents[axis];
-      if (height > 0) {
-        outside = true;
-        out.add(trianglePlaneGeom(mesh, t, faces[f], motion, geom, model), geom);
-      } else if (height > nearestHeight) {
-        nearestHeight = height;
-        nearestFace = f;
-      }
-    }
-    if (!outside) out.add(trianglePlaneGeom(mesh, t, faces[nearestFace], motion, geom, model), geom);
-  });
 }
 
 }  // namespace roundedmesh

@@ -11,21 +11,13 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::arra
   face.normal = normal.dot(corners[0]) > 0 ? normal : Vector3r(-normal);
   face.tangent1 = face.normal.unitOrthogonal();
   face.tangent2 = face.normal.cross(face.tangent1);
+  face.sheet = true;
   auto inFace = [&](const Vector3r& x) {
     return Vector2r((x - face.origin).dot(face.tangent1), (x - face.origin).dot(face.tangent2));
   };
   const ConvexPolygon outline = ConvexPolygon::triangle(inFace(corners[0]), inFace(corners[1]), inFace(corners[2]));
   face.faceOutline = &outline;
-
-  AlignedBox3r box;
-  for (const Vector3r& x : corners) {
-    box.extend(x);
-    box.extend(x + mesh.sphereBoundRadius() * face.normal);
-  }
-  PressureGeom geom;
-  mesh.tree().query([&](const AlignedBox3r& b) { return b.intersects(box); }, [&](int t) {
-    out.add(trianglePlaneGeom(mesh, t, face, motion, geom, model), geom);
-  });
+  faceGeometry(mesh, face, motion, out, model);
 }
 
 }  // namespace roundedmesh

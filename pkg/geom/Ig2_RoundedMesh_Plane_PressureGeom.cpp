@@ -9,14 +9,7 @@ void Ig2_RoundedMesh_Plane_PressureGeom(const RoundedMesh& mesh, const Plane& pl
   face.normal = -plane.normal;
   face.tangent1 = face.normal.unitOrthogonal();
   face.tangent2 = face.normal.cross(face.tangent1);
-  // A cap that reaches the plane has part of its box on the solid side.
-  auto reachesPlane = [&](const AlignedBox3r& box) {
-    return plane.normal.dot(box.center() - plane.point) < 0.5 * plane.normal.cwiseAbs().dot(box.sizes());
-  };
-  PressureGeom geom;
-  mesh.tree().query(reachesPlane, [&](int t) {
-    out.add(trianglePlaneGeom(mesh, t, face, motion, geom, model), geom);
-  });
+  faceGeometry(mesh, face, motion, out, model);
 }
 
 }  // namespace roundedmesh

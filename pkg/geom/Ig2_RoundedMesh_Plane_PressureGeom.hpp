@@ -1,6 +1,6 @@
-// Ig2 functor: the triangles of a rounded body against an infinite plane. Appends one PressureGeom per
-// triangle whose contact circle meets its projection (see trianglePlaneGeom); only triangles whose cap boxes
-// reach the plane are tested.
+// Ig2 functor: the triangles of a rounded body against an infinite plane (a Plane, or a YADE Wall): one
+// PressureGeom per triangle whose contact circle meets its projection (trianglePlaneGeom), among the triangles
+// whose cap boxes reach the plane (faceGeometry).
 // Inputs in body 1's frame: the plane, and the motion of the plane relative to body 1.
 #pragma once
 

@@ -1,7 +1,9 @@
 #include "pkg/geom/TrianglePlaneGeom.hpp"
 
 #include <cmath>
+#include <limits>
 
+#include "pkg/geom/DeepContactCriterion.hpp"
 #include "pkg/geom/EllipticalContact.hpp"
 
 namespace roundedmesh {
@@ -51,6 +53,33 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
   }
   setRelativeVelocity(geom, motion);
   return {Rejection::None};
+}
+
+void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
+                  CurvatureModel model) {
+  // A cap that reaches the plane has part of its box on the partner's side.
+  auto reachesPlane = [&](const AlignedBox3r& box) {
+    return face.normal.dot(face.origin - box.center()) < 0.5 * face.normal.cwiseAbs().dot(box.sizes());
+  };
+  // A cap whose projection meets the outline lies in the prism over it, as deep on either side as the body is wide.
+  AlignedBox3r prism(Vector3r::Constant(-std::numeric_limits<Real>::infinity()),
+                     Vector3r::Constant(std::numeric_limits<Real>::infinity()));
+  if (face.faceOutline) {
+    prism.setEmpty();
+    const Real reach = 2 * mesh.sphereBoundRadius();
+    for (int i = 0; i < face.faceOutline->size(); ++i) {
+      const Vector2r& x = (*face.faceOutline)[i];
+      const Vector3r corner = face.origin + x.x() * face.tangent1 + x.y() * face.tangent2;
+      prism.extend(corner + reach * face.normal).extend(corner - reach * face.normal);
+    }
+  }
+  PressureGeom geom;
+  mesh.tree().query([&](const AlignedBox3r& box) { return reachesPlane(box) && box.intersects(prism); }, [&](int t) {
+    GeomTest result = trianglePlaneGeom(mesh, t, face, motion, geom, model);
+    if (result && face.sheet && !insideRoundedSolid(mesh, planePoint(geom, geom.effectivePoint)))
+      result = {Rejection::ThroughBody};
+    out.add(result, geom);
+  });
 }
 
 }  // namespace roundedmesh

@@ -17,17 +17,28 @@ namespace roundedmesh {
 
 // A face of the partner in body 1's frame: a point on it, the normal n12 pointing into the partner, and
 // in-plane axes with t1 x t2 = n12. faceOutline, if given, bounds a finite face in (t1, t2) coordinates
-// relative to origin.
+// relative to origin. A sheet (a Facet: zero thickness) has nothing behind it: see faceGeometry.
 struct ContactFace {
   Vector3r origin;
   Vector3r normal;
   Vector3r tangent1, tangent2;
   const ConvexPolygon* faceOutline = nullptr;
+  bool sheet = false;
 };
 
 // With CurvatureModel::Principal a contact the circle accepts then takes the ellipse of EllipticalContact.hpp.
 GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactFace& face,
                            const RelativeMotion& motion, PressureGeom& geom,
                            CurvatureModel model = CurvatureModel::Mean);
+
+// Every flat partner's Ig2 (a Plane or Wall, a Facet, each face of a Box; doc/physics.md, "What each partner's
+// surface is"): trianglePlaneGeom for each triangle whose cap box reaches the face's plane (crosses it) and, for a
+// finite face, meets the prism over its outline. One culling for all, so that a Wall, a Facet and a Box face
+// give the same triangle contacts wherever the contact lies inside the face. Behind a sheet there is no solid, only
+// its other side: a triangle's cap behind a sheet's plane touches the sheet only where the sheet's point c_eff,
+// under the cap, lies inside the body (its rounded solid, DeepContactCriterion.hpp); elsewhere the cap has gone
+// past the sheet's edge on another side of it (at a ridge of Facets), and the candidate is rejected as ThroughBody.
+void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
+                  CurvatureModel model = CurvatureModel::Mean);
 
 }  // namespace roundedmesh

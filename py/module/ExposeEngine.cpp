@@ -175,12 +175,12 @@ class Engine {
   }
 
   // Why the last step was not kept, worst first: (cause 'crossed' or 'overlap', YADE id of the body, of the other
-  // side, the pair's deepest overlap [m], the size it is measured by [m]).
+  // side, the pair's deepest overlap [m], the size it is measured by [m], where: the pair's centre of pressure [m]).
   bp::list stops() const {
     bp::list listed;
     for (const StopReason& s : data_.stops)
       listed.append(bp::make_tuple(s.cause == StopCause::CentreCrossed ? "crossed" : "overlap", yadeId(s.body),
-                                   yadeId(s.other), s.overlap, s.size));
+                                   yadeId(s.other), s.overlap, s.size, s.point));
     return listed;
   }
 
@@ -385,6 +385,21 @@ bp::tuple sphereContact(const BodyMesh& mesh, const Vector3r& pos, const Quatern
                                             frictionLaw(friction)));
 }
 
+bp::tuple partnerContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const bp::object& partner,
+                         const HertzMaterial& meshMaterial, const HertzMaterial& partnerMaterial, const Vector3r& vel,
+                         const Vector3r& angVel, Real gamma, const std::string& regime, bool details,
+                         const std::string& friction, const std::string& curvature) {
+  const int id = bp::extract<int>(partner.attr("id"));
+  const PartnerShape shape = yadeShape(partner, id);
+  const bp::object s = partner.attr("state");
+  const BodyState partnerState = bodyState(bp::extract<Vector3r>(s.attr("pos")), bp::extract<Quaternionr>(s.attr("ori")),
+                                           bp::extract<Vector3r>(s.attr("vel")),
+                                           bp::extract<Vector3r>(s.attr("angVel")), 2);
+  return asTuple(roundedmesh::partnerContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
+                                             shape, partnerState, partnerMaterial,
+                                             pressureOptions(gamma, regime, curvature), details, frictionLaw(friction)));
+}
+
 bp::tuple bodyContact(const BodyMesh& mesh1, const Vector3r& pos1, const Quaternionr& ori1, const BodyMesh& mesh2,
                       const Vector3r& pos2, const Quaternionr& ori2, const HertzMaterial& material1,
                       const HertzMaterial& material2, const Vector3r& vel1, const Vector3r& angVel1,
@@ -449,6 +464,12 @@ void exposeEngine() {
            bp::arg("regime") = "auto", bp::arg("details") = false, bp::arg("friction") = "spring",
            bp::arg("curvature") = "mean"),
           "(F1, T1, F2, T2, contacts): see roundedmesh.sphere_contact.");
+  bp::def("_partner_contact", &partnerContact,
+          (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("partner"), bp::arg("mesh_material"),
+           bp::arg("partner_material"), bp::arg("vel") = zero, bp::arg("ang_vel") = zero, bp::arg("gamma") = 10.0,
+           bp::arg("regime") = "auto", bp::arg("details") = false, bp::arg("friction") = "spring",
+           bp::arg("curvature") = "mean"),
+          "(F1, T1, F2, T2, contacts): see roundedmesh.partner_contact.");
   bp::def("_body_contact", &bodyContact,
           (bp::arg("mesh1"), bp::arg("pos1"), bp::arg("ori1"), bp::arg("mesh2"), bp::arg("pos2"), bp::arg("ori2"),
            bp::arg("material1"), bp::arg("material2"), bp::arg("vel1") = zero, bp::arg("ang_vel1") = zero,

@@ -22,7 +22,7 @@ from . import _yade  # noqa: F401  (YADE's converters must exist before _core re
 from . import (analytic, benchmarking, checkpoint, contact, export, hertz_reference, meshfiles,  # noqa: F401
                model_choice, peers, progress, scene, scenes, shape_error, shapes, validation)
 from ._core import HertzMaterial, Mesh, plane_contact
-from .contact import body_contact, sphere_contact, triangle_contacts
+from .contact import body_contact, partner_contact, sphere_contact, triangle_contacts
 from .scene import _restore_mesh  # noqa: F401  (Mesh.__reduce__ names it as roundedmesh._restore_mesh)
 from .scene import (add_body, add_sphere, assign_material, contacts, critical_timestep, engine,
                     keep_triangle_forces, rounded_bodies, set_material, sphere_bodies, statistics, triangle_forces,
@@ -34,6 +34,6 @@ Mesh.load = staticmethod(meshfiles.load)
 Mesh.reference_shape = staticmethod(reference_shape)
 
 __all__ = ["Mesh", "HertzMaterial", "add_body", "add_sphere", "assign_material", "set_material", "engine",
-           "critical_timestep", "statistics", "rounded_bodies", "sphere_bodies", "plane_contact", "body_contact",
+           "critical_timestep", "statistics", "rounded_bodies", "sphere_bodies", "plane_contact", "partner_contact", "body_contact",
            "sphere_contact", "triangle_contacts", "contacts", "unbalanced_force", "keep_triangle_forces",
            "triangle_forces", "cheapest_model"]

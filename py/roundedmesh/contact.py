@@ -3,6 +3,7 @@ validation, for pictures, and to look inside a contact.
 
     body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, ...) -> (F1, T1, F2, T2)
     sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, ...) -> (F1, T1, F2, T2)
+    partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, ...) -> (F1, T1, F2, T2)
     triangle_contacts(mesh1, pos1, ori1, mesh2_or_radius, pos2, ori2, ...) -> the triangle pairs in contact
 
 Forces [N] and torques [N m] are global; each torque is about its own body's position. Velocities [m/s] and
@@ -13,7 +14,7 @@ Coulomb).
 """
 import numpy as np
 
-from ._core import _body_contact, _sphere_contact
+from ._core import _body_contact, _partner_contact, _sphere_contact
 
 _ZERO = (0.0, 0.0, 0.0)
 
@@ -34,6 +35,18 @@ def sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_materia
     analytic sphere of `radius` [m] centred at `centre` (what a YADE Sphere partner is)."""
     return _sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel, ang_vel, sphere_vel,
                            sphere_ang_vel, gamma, regime, False, friction, curvature)[:4]
+
+
+def partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel=_ZERO, ang_vel=_ZERO, gamma=10.0,
+                    regime="auto", friction="spring", curvature="mean", details=False):
+    """(force on the body, torque on it, force on the partner, torque on it about its position) of a rounded body
+    (Mesh `mesh` placed at pos, turned by ori) against `partner`, a YADE Body with a Wall, Box, Facet or Sphere shape
+    at its own pose and velocity (it need not be in O.bodies), made of `partner_material`. What the engine computes
+    for that pair in a step. With details=True a fifth item lists the triangle contacts as dicts (as
+    triangle_contacts' rows)."""
+    evaluated = _partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel, ang_vel, gamma,
+                                 regime, details, friction, curvature)
+    return evaluated if details else evaluated[:4]
 
 
 def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,

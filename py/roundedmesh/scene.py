@@ -825,16 +825,17 @@ def _relative_speed(body_id, other_id):
 
 def _stop_message(state, stops):
     """Why the run stops, naming the body, with the remedy: a time step for its speed, or that no step helps."""
-    cause, body, other, overlap, size = stops[0]
+    cause, body, other, overlap, size, point = stops[0]
+    where = f"at ({point[0]:.4g}, {point[1]:.4g}, {point[2]:.4g}) m"
     name, other_name = _describe(state, body), _describe(state, other)
     both_sized = other in state.body_ids or bool(_tag(f"sphere.{other}"))
     unit = _size_name(state, body) if not both_sized or _size_name(state, body) == _size_name(state, other) else "size"
     if cause == "crossed":
         what = (f"the centre of {name} has passed through {other_name} since the last step (their bounds overlapped "
-                "then), and the contact now pushes it on through")
+                f"then), and the contact now pushes it on through; it is {where}")
     else:
         what = (f"{name} overlaps {other_name} by {overlap:.3g} m ({overlap / size:.2f} "
-                f"{'of the smaller ' + unit if both_sized else unit}, {unit} = {size:.3g} m) and the overlap grows: "
+                f"{'of the smaller ' + unit if both_sized else unit}, {unit} = {size:.3g} m) {where}, and the overlap grows: "
                 f"past {state.options['stop_overlap']:g} {unit} (rm.engine(stop_overlap=...)) the contact no longer "
                 "describes it")
     speed = _relative_speed(body, other)
@@ -855,7 +856,7 @@ def _stop_message(state, stops):
         advice = "The bodies are at rest: the contact cannot hold them apart (a load too large for such soft materials)"
     more = ""
     if len(stops) > 1:
-        others = [f"{_describe(state, b)} with {_describe(state, o)}" for _, b, o, _, _ in stops[1:4]]
+        others = [f"{_describe(state, b)} with {_describe(state, o)}" for _, b, o, *_ in stops[1:4]]
         more = f" Also: {'; '.join(others)}{'; ...' if len(stops) > 4 else ''}."
     return f"{what}. {advice}.{more}"
 
