@@ -215,7 +215,7 @@ def test_bears_settling_in_a_box_raise_nothing():
 
 
 def test_the_stop_message_stands_alone():
-    # One sentence on what happened, one on what to do; read in a terminal without a traceback through roundedmesh.
+    # One sentence on what happened and where, one on what to do; read in a terminal without a traceback through roundedmesh.
     ball, floor_id = thrown_ball("Facet", RUBBER, RUBBER_FLOOR)
     O.dt = 0.2 * rm.critical_timestep()
     with warnings.catch_warnings():
@@ -226,7 +226,8 @@ def test_the_stop_message_stands_alone():
     cause = message[message.index("roundedmesh stopped"):]
     cause = cause[:cause.index("\n")] if "\n" in cause else cause
     assert re.fullmatch(r"roundedmesh stopped the run at iteration \d+: rounded body \d+ overlaps Facet \d+ "
-                        r"by [0-9.e-]+ m \(0\.\d\d r_eq, r_eq = 0.0249 m\) and the overlap grows: past 0.5 r_eq "
+                        r"by [0-9.e-]+ m \(0\.\d\d r_eq, r_eq = 0.0249 m\) at \([-0-9.e]+, [-0-9.e]+, [-0-9.e]+\) m, and "
+                        r"the overlap grows: past 0.5 r_eq "
                         r"\(rm.engine\(stop_overlap=...\)\) the contact no longer describes it\. At 30 m/s it moves "
                         r"[0-9.]+ r_eq per step \(O.dt = [0-9.e-]+ s\): reduce O.dt to "
                         r"rm.critical_timestep\(impact_speed=30\) = [0-9.e-]+ s or less and start again from a state "
