@@ -4,7 +4,7 @@ Facets, all at z = 0, with S1's materials, mu = 0.5 and c = 100 N s/m (the slope
 It settles for `settle` seconds; then its drift (how far its centre moves) over `duration` seconds, and the force the
 partner carries against the bear's weight. A Box used to stop such runs on phantom overlaps of its far faces.
 
-    /usr/bin/python3 scripts/validate_resting_on_partners.py [--orientations 20] [--settle 1.5] [--duration 2]
+    /usr/bin/python3 scripts/validate_resting_on_partners.py [--orientations 20] [--settle 2.5] [--duration 2]
                                                              [--partners wall box facets] [--output out/resting]
 
 Writes resting.csv (one row per partner and orientation) and resting.png (drift per orientation), and prints the
@@ -92,7 +92,7 @@ def rest(kind, ori, settle, duration):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--orientations", type=int, default=20)
-    parser.add_argument("--settle", type=float, default=1.5)
+    parser.add_argument("--settle", type=float, default=2.5)
     parser.add_argument("--duration", type=float, default=2.0)
     parser.add_argument("--partners", nargs="+", choices=PARTNERS, default=list(PARTNERS))
     parser.add_argument("--output", default="out/resting")
@@ -113,9 +113,10 @@ def main():
     write_csv(os.path.join(args.output, "resting.csv"), ["partner", "orientation", "drift_m", "load_over_weight", "steps"],
               rows)
     fig, ax = plt.subplots(figsize=(6, 3.5))
-    for kind in args.partners:
+    for shift, kind in enumerate(args.partners):
         mine = [r for r in rows if r[0] == kind]
-        ax.semilogy([r[1] for r in mine], [max(r[2] * 1e6, 1e-9) for r in mine], "o", label=kind)
+        # Side by side; a drift of exactly 0 (the centre did not move by one ulp) drawn at 1e-12 um.
+        ax.semilogy([r[1] + 0.2 * (shift - 1) for r in mine], [max(r[2] * 1e6, 1e-12) for r in mine], "o", label=kind)
     ax.axhline(1.0, color="k", lw=0.8, ls="--", label="1 um")
     ax.set_xlabel("orientation")
     ax.set_ylabel(f"drift over {args.duration:g} s [um]")

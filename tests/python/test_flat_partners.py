@@ -99,3 +99,23 @@ def test_partner_contact_names_a_body_that_cannot_be_a_partner(meshes):
     shapeless = O.bodies[O.bodies.append(Body())]
     with pytest.raises(ValueError, match=f"body {shapeless.id}: a no shape cannot be a roundedmesh contact partner"):
         rm.partner_contact(meshes["sphere"], (0, 0, 0.03), Quaternion.Identity, shapeless, BODY, FLOOR)
+
+
+def test_a_bear_dropped_on_a_box_lands_and_rests():
+    """scripts/validate_resting_on_partners.py's scene, three orientations, 2 s: the bear falls 5 mm onto a Box
+    0.1 m thick, tumbles, and comes to rest on it (within 1.5 s in every orientation of the script's 20), the run never
+    stops (it used to stop within 263-853 steps on a phantom overlap of the Box's bottom face), and the Box carries
+    the bear's weight to 1e-6 (at rest, the bear's speed is below 1e-12 m/s by then)."""
+    import importlib.util
+    import os
+    path = os.path.join(os.path.dirname(__file__), os.pardir, os.pardir, "scripts", "validate_resting_on_partners.py")
+    spec = importlib.util.spec_from_file_location("validate_resting_on_partners", path)
+    resting = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(resting)
+    for ori in resting.random_orientations(3):
+        bear, (box,) = resting.build("box", ori)
+        O.run(int(2.0 / O.dt), True)
+        top = O.bodies[box].state.pos[2] + O.bodies[box].shape.extents[2]
+        assert O.bodies[bear].state.pos[2] > top
+        weight = O.bodies[bear].state.mass * resting.G
+        assert abs(-O.forces.f(box)[2] - weight) < 1e-6 * weight
