@@ -51,6 +51,7 @@ def test_a_run_killed_within_a_save_resumes_bit_for_bit(tmp_path, uninterrupted,
 
 # Killed by another process at a random moment after the first checkpoint: often while O.save writes (the
 # partial file is then left behind, and must not matter).
+@pytest.mark.slow
 @pytest.mark.parametrize("seed", [1, 2, 3])
 def test_a_run_killed_at_a_random_moment_resumes_bit_for_bit(tmp_path, uninterrupted, seed):
     path = tmp_path / "run.yade.gz"

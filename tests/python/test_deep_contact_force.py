@@ -52,6 +52,7 @@ def falls(up_to):
     return found
 
 
+@pytest.mark.slow
 def test_the_force_grows_with_the_overlap_through_the_hertz_range_in_every_orientation():
     assert all(along[-1] > 0 for along, _ in sweeps())  # every pair pushes apart at half a radius
     assert falls(0.1) == []

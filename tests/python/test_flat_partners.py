@@ -101,6 +101,7 @@ def test_partner_contact_names_a_body_that_cannot_be_a_partner(meshes):
         rm.partner_contact(meshes["sphere"], (0, 0, 0.03), Quaternion.Identity, shapeless, BODY, FLOOR)
 
 
+@pytest.mark.slow
 def test_a_bear_dropped_on_a_box_lands_and_rests():
     """scripts/validate_resting_on_partners.py's scene, three orientations, 2 s: the bear falls 5 mm onto a Box
     0.1 m thick, tumbles, and comes to rest on it (within 1.5 s in every orientation of the script's 20), the run never

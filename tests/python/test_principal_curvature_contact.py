@@ -216,6 +216,7 @@ GRAVITY = 9.81
 # rock and slide: the ellipse under it must carry its weight once settled. Step by step the floor's force keeps a
 # jitter of a few 1e-4 m g after settling, with either curvature model (measured: up to 5e-4 principal, 7e-4 mean,
 # over 6000 steps), so the force is averaged over 200 steps (measured deviation of the average ~1e-5); bound 1e-3.
+@pytest.mark.slow
 def test_spheroid_resting_on_a_wall_carries_its_weight():
     floor = O.bodies.append(utils.wall(0, axis=2, sense=1))
     rm.assign_material(floor, STIFF)

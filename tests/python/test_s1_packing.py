@@ -9,6 +9,7 @@ import subprocess
 import xml.etree.ElementTree as ElementTree
 
 import numpy as np
+import pytest
 
 from test_export import read_piece
 
@@ -121,6 +122,7 @@ def test_perfect_spheres_rest_on_the_floor_through_roundedmesh(tmp_path):
 # One step of 4 gummy bears, as rounded bodies and as YADE's 40-sphere clumps: every representation starts from
 # S1's lattice with the same jitter and orientations. A clump's centre is its spheres' union's, within 0.3 mm of
 # the bear's (roundedmesh.peers); one step of free fall moves both alike (g dt^2 = 1e-7 m).
+@pytest.mark.slow
 def test_yade_peers_start_where_the_rounded_bodies_start(tmp_path):
     out = run("--shape", "gummy_bear", "--peers", "clumps", "--count", "4", "--duration", "1e-4", "--frames", "1",
               "--output", str(tmp_path))
@@ -140,6 +142,7 @@ def test_yade_peers_start_where_the_rounded_bodies_start(tmp_path):
 
 # 500 steps of 4 icospheres, a checkpoint every 200: the run is taken as stopped after its last checkpoint (its
 # timing.csv removed) and resumed from step 400; it must end exactly as the uninterrupted run (same floats).
+@pytest.mark.slow
 def test_a_resumed_run_ends_exactly_as_the_uninterrupted_one(tmp_path):
     arguments = ["--shape", "icosphere12", "--count", "4", "--duration", "0.05", "--checkpoint-every", "200",
                  "--frames", "5", "--output", str(tmp_path)]
@@ -177,6 +180,7 @@ def test_bad_input_is_refused_before_any_step(tmp_path):
         assert not list(output.rglob("height.csv")), arguments
 
 
+@pytest.mark.slow
 def test_a_resume_from_a_missing_damaged_or_foreign_checkpoint_is_refused(tmp_path):
     arguments = ["--shape", "icosphere12", "--count", "2", "--duration", "0.03", "--checkpoint-every", "100",
                  "--frames", "1", "--output", str(tmp_path)]

@@ -220,6 +220,7 @@ def test_every_representation_stands_where_the_smooth_shape_does():
 
 # --- the script ---------------------------------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_quick_study_runs_and_writes_the_table(tmp_path):
     # the whole study in one run: errors, S1 costs (speed_vs_error_costs.py --quick) and the report
     out = subprocess.run(["/usr/bin/python3", SCRIPT, "--quick", "--costs", "--report", "--output", str(tmp_path)],

@@ -65,6 +65,7 @@ def test_a_rounded_body_and_a_yade_sphere_on_a_wall_by_hand():
     assert math.isnan(rm.unbalanced_force()) is False
 
 
+@pytest.mark.slow
 def test_falls_below_a_hundredth_as_a_packing_settles():
     # Six 42-node balls dropped into a box with normal damping (A = 0.01 s): the usual settling loop ends. YADE's
     # own utils.unbalancedForce() has no interaction to average over in this scene and gives nan.
