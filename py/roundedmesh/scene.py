@@ -826,7 +826,7 @@ def _relative_speed(body_id, other_id):
 def _stop_message(state, stops):
     """Why the run stops, naming the body, with the remedy: a time step for its speed, or that no step helps."""
     cause, body, other, overlap, size, point = stops[0]
-    where = f"at ({point[0]:.4g}, {point[1]:.4g}, {point[2]:.4g}) m"
+    where = "at ({}) m".format(", ".join(f"{round(x, 9) + 0.0:.4g}" for x in point))  # to the nanometre, no -0
     name, other_name = _describe(state, body), _describe(state, other)
     both_sized = other in state.body_ids or bool(_tag(f"sphere.{other}"))
     unit = _size_name(state, body) if not both_sized or _size_name(state, body) == _size_name(state, other) else "size"
