@@ -439,6 +439,9 @@ void exposeEngine() {
       .def("triangle_forces", &Engine::triangleForces)
       .add_property("keep_triangle_contacts", &Engine::keepTriangleContacts, &Engine::setKeepTriangleContacts);
 
+  // The engine's constants, declared once in pkg/engine/ContactModel.hpp.
+  bp::scope().attr("STOP_OVERLAP") = kStopOverlap;
+  bp::scope().attr("DEEPEST_OVERLAP") = kDeepestOverlap;
   bp::def("partner_kind", +[](const bp::object& body) {
             const int id = bp::extract<int>(body.attr("id"));
             return std::visit([](const auto& shape) { return partnerKindName(shape); }, yadeShape(body, id));

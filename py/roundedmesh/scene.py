@@ -38,15 +38,14 @@ from yade import Body, ForceResetter, Material, NewtonIntegrator, O, PyRunner, S
 from yade import Sphere as YadeSphere
 from yade.minieigenHP import Quaternion, Vector3
 
-from ._core import Engine, HertzMaterial, Mesh, partner_kind
+from ._core import DEEPEST_OVERLAP, STOP_OVERLAP, Engine, HertzMaterial, Mesh, partner_kind
 
 _PREFIX = "roundedmesh."
 _REVISION = _PREFIX + "revision"
 _ENGINE_COMMAND = "__import__('roundedmesh').scene.step"
-# Past this overlap, as a fraction of the smaller side's size (a rounded body's volume-equivalent radius r_eq, a
-# sphere's radius), a pair whose overlap grows stops the run (kStopOverlap in pkg/engine/ContactModel.hpp;
-# doc/physics.md, "Deep overlaps and fast impacts").
-STOP_OVERLAP = 0.5
+# STOP_OVERLAP (from _core, kStopOverlap of pkg/engine/ContactModel.hpp): past this overlap, as a fraction of the
+# smaller side's size (a rounded body's volume-equivalent radius r_eq, a sphere's radius), a pair whose overlap grows
+# stops the run (doc/physics.md, "Deep overlaps and fast impacts").
 _ENGINE_OPTIONS = {"gamma": 10.0, "regime": "auto", "friction": "spring", "stop_overlap": STOP_OVERLAP,
                    "curvature": "mean"}
 _FRICTION_LAWS = ("spring", "viscous")
@@ -760,10 +759,10 @@ def _track_energy(energy):
         O.energy[key] = (O.energy[key] if key in keys else 0.0) + power * O.dt
 
 
-# Beyond this overlap, as a fraction of the smaller volume-equivalent radius, a pair is deeper than a Hertz contact
-# is meant to reach (kDeepestOverlap in pkg/engine/ContactModel.hpp): at the start of a run it is a body placed
-# inside another, not a contact.
-DEEP_OVERLAP = 0.1
+# Beyond DEEPEST_OVERLAP (from _core, kDeepestOverlap of pkg/engine/ContactModel.hpp), as a fraction of the smaller
+# volume-equivalent radius, a pair is deeper than a Hertz contact is meant to reach: at the start of a run it is a
+# body placed inside another, not a contact. DEEP_OVERLAP, its older name here, stays for scripts that use it.
+DEEP_OVERLAP = DEEPEST_OVERLAP
 _WARNED_PAIRS = 10
 
 

@@ -40,7 +40,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from yade.minieigenHP import Quaternion, Vector3
 
-from ._core import HertzMaterial, Mesh
+from ._core import DEEPEST_OVERLAP, HertzMaterial, Mesh
 from .analytic import (approximate_elliptical_hertz_force, elliptical_hertz_force, hertz_force, nrmse,
                        parallel_cylinders_force, spheroid_equator_radii)
 from .contact import body_contact, sphere_contact
@@ -50,9 +50,8 @@ from .hertz_reference import relative_principal_radii
 
 _AXES = np.eye(3)
 
-# Mirrors kDeepestOverlap of pkg/engine/ContactModel.hpp: the triangle pair search margin, as a fraction of the
-# smaller body's volume-equivalent radius.
-DEEPEST_OVERLAP = 0.1
+# DEEPEST_OVERLAP (kDeepestOverlap of pkg/engine/ContactModel.hpp): the triangle pair search margin, as a fraction of
+# the smaller body's volume-equivalent radius.
 
 
 def equivalent_radius(mesh):
