@@ -25,9 +25,13 @@ struct PlacedMesh {
   const Vector3r& translation;
 };
 
-// Whether x (the mesh's frame) lies in the mesh's rounded solid: within its tallest cap of the flat solid, up to the
-// distance field's tolerance (and `slack` [m] more).
-bool insideRoundedSolid(const RoundedMesh& mesh, const Vector3r& x, Real slack = 0);
+// Whether the straight path from `from`, a point of triangle s, into the solid to x (the mesh's frame) ends inside
+// the mesh's rounded solid: it crosses the flat surface an even number of times on the way (each triangle but s
+// whose box meets the path's, tested exactly), or an odd number and x lies within the cap of the triangle it left
+// through last. Exact where the distance field is not: a sheet's point 1 mm outside a body that wraps around the
+// sheet's edge (a lifter ridge in a gummy bear's hollow) is within the field's tolerance of the body, yet the path to
+// it from a limb behind the sheet leaves the bear.
+bool pathInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x);
 
 // The segment test for triangle s of mesh1 and triangle t of body 2 in contact as `geom` (body 1's frame).
 bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom);

@@ -76,8 +76,16 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
   PressureGeom geom;
   mesh.tree().query([&](const AlignedBox3r& box) { return reachesPlane(box) && box.intersects(prism); }, [&](int t) {
     GeomTest result = trianglePlaneGeom(mesh, t, face, motion, geom, model);
-    if (result && face.sheet && !insideRoundedSolid(mesh, planePoint(geom, geom.effectivePoint)))
-      result = {Rejection::ThroughBody};
+    if (result && face.sheet) {
+      // The line along n12 through c_eff meets triangle t (c_eff is in its projection S) `behind` the sheet, or in
+      // front of it, where only the cap's bulge crosses the sheet and c_eff lies between the triangle and the cap.
+      const RoundedTriangle& rounded = mesh.rounded(t);
+      const Vector3r onSheet = planePoint(geom, geom.effectivePoint);
+      const Real behind =
+          rounded.normal.dot(mesh.vertices()[mesh.triangles()[t][0]] - onSheet) / rounded.normal.dot(face.normal);
+      if (behind > 0 && !pathInsideBody(mesh, t, onSheet + behind * face.normal, onSheet))
+        result = {Rejection::ThroughBody};
+    }
     out.add(result, geom);
   });
 }

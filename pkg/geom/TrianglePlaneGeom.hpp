@@ -35,9 +35,11 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
 // surface is"): trianglePlaneGeom for each triangle whose cap box reaches the face's plane (crosses it) and, for a
 // finite face, meets the prism over its outline. One culling for all, so that a Wall, a Facet and a Box face
 // give the same triangle contacts wherever the contact lies inside the face. Behind a sheet there is no solid, only
-// its other side: a triangle's cap behind a sheet's plane touches the sheet only where the sheet's point c_eff,
-// under the cap, lies inside the body (its rounded solid, DeepContactCriterion.hpp); elsewhere the cap has gone
-// past the sheet's edge on another side of it (at a ridge of Facets), and the candidate is rejected as ThroughBody.
+// its other side: a triangle's cap behind a sheet's plane touches the sheet only where the body reaches through it,
+// the path along n12 from the triangle (behind the sheet) to the sheet's point c_eff running inside the body
+// (pathInsideBody, DeepContactCriterion.hpp); elsewhere the cap has gone past the sheet's edge on another side of it
+// (a body resting on one face of a ridge of Facets, or wrapped around it), and the candidate is rejected as
+// ThroughBody.
 void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
                   CurvatureModel model = CurvatureModel::Mean);
 
