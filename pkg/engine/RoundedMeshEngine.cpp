@@ -178,8 +178,9 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
                           Ig2_RoundedMesh_Facet_PressureGeom(*body.mesh, corners, motion, out, curvature);
                         },
                         [&](const Sphere& sphere) {
-                          Ig2_RoundedMesh_Sphere_PressureGeom(*body.mesh, sphere, local(s2.position), motion, out,
-                                                              curvature);
+                          Ig2_RoundedMesh_Sphere_PressureGeom(
+                              *body.mesh, sphere, local(s2.position), motion, out, curvature,
+                              kDeepestOverlap * std::min(body.equivalentRadius, sphere.radius));
                         },
                         [&](const Plane& plane) { planeGeometry(*body.mesh, plane, s1, toBody, motion, out, curvature); },
                         [&](const Wall& wall) {

@@ -1,5 +1,6 @@
 #include "pkg/geom/TrianglePlaneGeom.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -55,6 +56,26 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
   return {Rejection::None};
 }
 
+namespace {
+
+// A point of the face's plane in its outline's coordinates.
+Vector2r toSheet(const ContactFace& face, const Vector3r& x) {
+  return Vector2r((x - face.origin).dot(face.tangent1), (x - face.origin).dot(face.tangent2));
+}
+
+// How far p, inside a convex outline, lies from its boundary.
+Real distanceToEdge(const ConvexPolygon& outline, const Vector2r& p) {
+  Real nearest = std::numeric_limits<Real>::infinity();
+  for (int i = 0; i < outline.size(); ++i) {
+    const Vector2r a = outline[i], b = outline[(i + 1) % outline.size()];
+    const Real along = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), Real(0), Real(1));
+    nearest = std::min(nearest, (p - (a + along * (b - a))).norm());
+  }
+  return nearest;
+}
+
+}  // namespace
+
 void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
                   CurvatureModel model) {
   // A cap that reaches the plane has part of its box on the partner's side.
@@ -83,7 +104,8 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
       const Vector3r onSheet = planePoint(geom, geom.effectivePoint);
       const Real behind =
           rounded.normal.dot(mesh.vertices()[mesh.triangles()[t][0]] - onSheet) / rounded.normal.dot(face.normal);
-      if (behind > 0 && !pathInsideBody(mesh, t, onSheet + behind * face.normal, onSheet))
+      if ((behind > 0 && !pathInsideBody(mesh, t, onSheet + behind * face.normal, onSheet)) ||
+          !(geom.effectiveOverlap <= distanceToEdge(*face.faceOutline, toSheet(face, onSheet))))
         result = {Rejection::ThroughBody};
     }
     out.add(result, geom);

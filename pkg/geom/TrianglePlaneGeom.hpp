@@ -39,7 +39,9 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
 // the path along n12 from the triangle (behind the sheet) to the sheet's point c_eff running inside the body
 // (pathInsideBody, DeepContactCriterion.hpp); elsewhere the cap has gone past the sheet's edge on another side of it
 // (a body resting on one face of a ridge of Facets, or wrapped around it), and the candidate is rejected as
-// ThroughBody.
+// ThroughBody. So is a cap deeper behind a sheet than c_eff lies from the sheet's edge: the cap has come round the
+// edge (a lifter's ridge cutting into a body straddling it), and moving it past the edge parts it from the sheet
+// sooner than pushing it back through; a sheet's edge is sharp and carries no force of its own.
 void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
                   CurvatureModel model = CurvatureModel::Mean);
 

@@ -7,16 +7,24 @@
     write_spheres_vtp(path)  YADE's Spheres of the scene (partners or not, clump members too) as points;
                              point data: body id, radius [m], velocity [m/s]; ParaView's Glyph filter (sphere,
                              scale by "radius", factor 2) draws them
+    write_partners_vtp(path) YADE's Facets and Boxes of the scene (contact partners or not) as polygons in
+                             global coordinates, posed by their bodies' pos and ori: a Facet as its triangle, a Box
+                             as its six faces (quads, counter-clockwise seen from outside); cell data: body id,
+                             shape (0 Facet, 1 Box), partner (1 if rm.assign_material made the body a contact
+                             partner of the rounded bodies), force [N] on the body in the last step (O.forces,
+                             the same on every face of a Box); what a drum, silo or hopper of Facets looks like
+                             in ParaView without YADE's VTKRecorder. Walls, infinite planes, are left out
     write_mesh_vtp(mesh, path)  one Mesh in its own (principal) frame; cell data: radius, curvature,
                              principal_curvatures (k1, k2) [1/m], principal_direction (of k1; kept out of
                              the scene's frames, which they would double);
                              point data: node curvature computed from the mesh (Eq. 1)
     write_csv(path, header, rows)  a table of results, one header row then the rows (the CSV beside each plot)
-    VtkSeries(directory, spheres=False)  numbered .vtp files plus a .pvd collection indexed by simulated
-                             time; call .write() when a frame is wanted, e.g. from a PyRunner (it turns
-                             keep_triangle_forces() on, so frames have the contact forces). With
-                             spheres=True each frame also has the spheres, as part 1 of the collection, so that
-                             ParaView shows both in one time series
+    VtkSeries(directory, spheres=False, partners=False)  numbered .vtp files plus a .pvd collection indexed
+                             by simulated time; call .write() when a frame is wanted, e.g. from a PyRunner (it
+                             turns keep_triangle_forces() on, so frames have the contact forces). With
+                             spheres=True each frame also has the spheres, and with partners=True the Facets and
+                             Boxes, as further parts of the collection (part 1, then 2 with both), so that
+                             ParaView shows them all in one time series
 
 Arrays are written in VTK's binary XML encoding: each DataArray holds base64 text of its zlib-compressed
 little-endian values, preceded by VTK's compression header (UInt64: number of blocks, block size, size of
@@ -31,7 +39,7 @@ import xml.etree.ElementTree as ElementTree
 import zlib
 
 import numpy as np
-from yade import O, Sphere
+from yade import Box, Facet, O, Sphere
 
 from . import scene
 from .scene import rounded_bodies
@@ -94,19 +102,24 @@ def _data_array(parent, name, values, components=1):
 
 
 def _polydata(points, cells, cell_kind):
-    """The VTKFile and Piece of a PolyData with `cells` (one row of point indices per cell) of `cell_kind`
-    ('Polys' or 'Verts')."""
+    """The VTKFile and Piece of a PolyData with `cells` of `cell_kind` ('Polys' or 'Verts'): one row of point
+    indices per cell, or a list of such rows of any lengths (polygons of several sizes)."""
     root = ElementTree.Element("VTKFile", type="PolyData", version="1.0", byte_order="LittleEndian",
                                header_type="UInt64", compressor="vtkZLibDataCompressor")
-    cells = np.asarray(cells, np.int64)
+    if isinstance(cells, list):
+        sizes = np.array([len(c) for c in cells], np.int64)
+        connectivity = np.concatenate([np.zeros(0, np.int64)] + [np.asarray(c, np.int64) for c in cells])
+    else:
+        cells = np.asarray(cells, np.int64)
+        sizes, connectivity = np.full(len(cells), cells.shape[1], np.int64), cells.reshape(-1)
     piece = ElementTree.SubElement(ElementTree.SubElement(root, "PolyData"), "Piece",
                                    NumberOfPoints=str(len(points)),
-                                   **{f"NumberOf{kind}": str(len(cells) if kind == cell_kind else 0)
+                                   **{f"NumberOf{kind}": str(len(sizes) if kind == cell_kind else 0)
                                       for kind in ("Verts", "Lines", "Strips", "Polys")})
     _data_array(ElementTree.SubElement(piece, "Points"), "Points", np.asarray(points, float).reshape(-1, 3), 3)
     element = ElementTree.SubElement(piece, cell_kind)
-    _data_array(element, "connectivity", cells)
-    _data_array(element, "offsets", cells.shape[1] * np.arange(1, len(cells) + 1, dtype=np.int64))
+    _data_array(element, "connectivity", connectivity)
+    _data_array(element, "offsets", np.cumsum(sizes))
     return root, piece
 
 
@@ -145,6 +158,51 @@ def write_spheres_vtp(path):
     return _write(root, path)
 
 
+# A Box's corners (signs of its half extents along its body's axes) and its faces, counter-clockwise seen from
+# outside: -x, +x, -y, +y, -z, +z.
+_BOX_CORNERS = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], float)
+_BOX_FACES = np.array([[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]])
+
+
+def _partner_surfaces():
+    """Points, polygons (a list of point index rows) and cell data of the scene's Facets and Boxes in global
+    coordinates. YADE keeps a Facet's vertices in its body's frame, relative to the body's position, and a Box's
+    half extents along its body's axes."""
+    partners = {int(i) for i in scene._tags_named("partner")}
+    points, polygons = [np.zeros((0, 3))], []
+    cells = {"body_id": [], "shape": [], "partner": [], "force": []}
+    offset = 0
+    for body in O.bodies:
+        if body is None or not isinstance(body.shape, (Facet, Box)):
+            continue
+        rotation, position = np.array(body.state.ori.toRotationMatrix()), np.array(body.state.pos)
+        if isinstance(body.shape, Facet):
+            local, faces, kind = np.array([list(v) for v in body.shape.vertices], float), np.array([[0, 1, 2]]), 0
+        else:
+            local, faces, kind = _BOX_CORNERS * np.array(body.shape.extents), _BOX_FACES, 1
+        points.append(local @ rotation.T + position)
+        polygons.extend(faces + offset)
+        offset += len(local)
+        cells["body_id"].extend([body.id] * len(faces))
+        cells["shape"].extend([kind] * len(faces))
+        cells["partner"].extend([int(body.id in partners)] * len(faces))
+        cells["force"].extend([list(O.forces.f(body.id))] * len(faces))
+    cells = {name: np.array(values, int if name != "force" else float) for name, values in cells.items()}
+    cells["force"] = cells["force"].reshape(-1, 3)
+    return np.vstack(points), polygons, cells
+
+
+def write_partners_vtp(path):
+    """Writes the current scene's Facets and Boxes (contact partners or not) to `path` (.vtp) and returns the
+    path."""
+    points, polygons, cell_data = _partner_surfaces()
+    root, piece = _polydata(points, polygons, "Polys")
+    cells = ElementTree.SubElement(piece, "CellData", Scalars="body_id", Vectors="force")
+    for name, values in cell_data.items():
+        _data_array(cells, name, values, 3 if name == "force" else 1)
+    return _write(root, path)
+
+
 def write_mesh_vtp(mesh, path):
     """Writes `mesh` in its principal frame to `path` (.vtp) with its curvature, and returns the path."""
     cells = {"radius": mesh.radii, "curvature": mesh.curvatures, "principal_curvatures": mesh.principal_curvatures,
@@ -153,15 +211,17 @@ def write_mesh_vtp(mesh, path):
 
 
 class VtkSeries:
-    """Frames `<prefix>_<iteration>.vtp` (and `<prefix>_spheres_<iteration>.vtp` with spheres=True) in
-    `directory`, and the collection `<prefix>.pvd` that ParaView opens as one time series: rounded bodies as
-    part 0, spheres as part 1."""
+    """Frames `<prefix>_<iteration>.vtp` (and `<prefix>_spheres_<iteration>.vtp` with spheres=True,
+    `<prefix>_partners_<iteration>.vtp` with partners=True) in `directory`, and the collection `<prefix>.pvd` that
+    ParaView opens as one time series: rounded bodies as part 0, then spheres and then Facets and Boxes, each
+    that is asked for as the next part."""
 
-    def __init__(self, directory, prefix="rounded_bodies", spheres=False):
+    def __init__(self, directory, prefix="rounded_bodies", spheres=False, partners=False):
         scene.keep_triangle_forces()
         self.directory = directory
         self.prefix = prefix
         self.spheres = spheres
+        self.partners = partners
         self.frames = []
         os.makedirs(directory, exist_ok=True)
 
@@ -170,7 +230,10 @@ class VtkSeries:
         write_vtp(os.path.join(self.directory, names[0]))
         if self.spheres:
             names.append(f"{self.prefix}_spheres_{O.iter:08d}.vtp")
-            write_spheres_vtp(os.path.join(self.directory, names[1]))
+            write_spheres_vtp(os.path.join(self.directory, names[-1]))
+        if self.partners:
+            names.append(f"{self.prefix}_partners_{O.iter:08d}.vtp")
+            write_partners_vtp(os.path.join(self.directory, names[-1]))
         self.frames.append((O.time, names))
         root = ElementTree.Element("VTKFile", type="Collection", version="1.0")
         collection = ElementTree.SubElement(root, "Collection")

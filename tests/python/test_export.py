@@ -11,7 +11,7 @@ from yade import O, utils
 from yade.minieigenHP import Quaternion, Vector3
 
 import roundedmesh as rm
-from roundedmesh.export import VtkSeries, write_mesh_vtp, write_spheres_vtp, write_vtp
+from roundedmesh.export import VtkSeries, write_mesh_vtp, write_partners_vtp, write_spheres_vtp, write_vtp
 
 RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000)
 TYPES = {"Float64": "<f8", "Int64": "<i8"}
@@ -177,3 +177,86 @@ def test_no_force_cells_unless_kept(tmp_path):
     rm.keep_triangle_forces()
     _, arrays = read_piece(write_vtp(str(tmp_path / "bodies.vtp")))
     np.testing.assert_array_equal(arrays["contact_force"], 0)  # before any step: no contact force yet
+
+
+def rotation(axis, angle):
+    """The rotation matrix of `angle` [rad] about the unit vector `axis` (Rodrigues' formula)."""
+    k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]], float)
+    return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * k @ k
+
+
+# Facets and Boxes, partners or not, as polygons in global coordinates: a Facet's corners where utils.facet was
+# given them, a Box's eight corners at pos +- its half extents along its turned axes; cell data per polygon.
+def test_partners_are_the_facets_and_boxes_in_global_coordinates(tmp_path):
+    corners = np.array([[0.1, 0.2, 0.3], [0.5, 0.2, 0.3], [0.1, 0.6, 0.4]])
+    facet = O.bodies.append(utils.facet([Vector3(*c) for c in corners]))
+    turn = Quaternion(Vector3(1, 1, 0).normalized(), 0.7)
+    box = O.bodies.append(utils.box((1, 2, 3), (0.1, 0.2, 0.3), orientation=turn))
+    rm.add_body(rm.Mesh.icosphere(0.05, 1), pos=(0, 0, 1), material=RUBBER)  # neither: not in the file
+    O.bodies.append(utils.sphere((5, 5, 5), 0.1))
+    O.bodies.append(utils.wall(0, axis=2))
+    rm.assign_material(box, RUBBER)
+    piece, arrays = read_piece(write_partners_vtp(str(tmp_path / "partners.vtp")))
+    assert (piece.get("NumberOfPoints"), piece.get("NumberOfPolys"), piece.get("NumberOfVerts")) == ("11", "7", "0")
+    points = arrays["Points"]
+    np.testing.assert_allclose(points[:3], corners, atol=1e-15)
+    # the box: every corner at pos + R (+-a, +-b, +-c), R the turn
+    half = np.array([0.1, 0.2, 0.3])
+    expected = [np.array([1, 2, 3]) + rotation(np.array([1, 1, 0]) / np.sqrt(2), 0.7) @ (np.array(s) * half)
+                for s in [(sx, sy, sz) for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)]]
+    np.testing.assert_allclose(points[3:], expected, atol=1e-14)
+    np.testing.assert_array_equal(arrays["offsets"], [3, 7, 11, 15, 19, 23, 27])
+    faces = arrays["connectivity"][3:].reshape(6, 4)
+    assert sorted(np.unique(faces)) == list(range(3, 11))
+    for face in faces:  # a quad in a plane, counter-clockwise seen from outside: its normal points away from pos
+        a, b, c, d = points[face]
+        normal = np.cross(b - a, d - a)
+        assert np.dot(normal, (a + b + c + d) / 4 - [1, 2, 3]) > 0
+        assert abs(np.dot(normal / np.linalg.norm(normal), c - a)) < 1e-14
+    np.testing.assert_array_equal(arrays["body_id"], [facet] + [box] * 6)
+    np.testing.assert_array_equal(arrays["shape"], [0] + [1] * 6)
+    np.testing.assert_array_equal(arrays["partner"], [0] + [1] * 6)
+    np.testing.assert_array_equal(arrays["force"], np.zeros((7, 3)))
+
+
+# A drum's Facets turned by YADE's RotationEngine: each body's pos and ori move, its vertices stay in its own frame;
+# the file has the triangles where the turn put them (Rodrigues' formula about the engine's axis and point), and
+# the force YADE's O.forces holds for each body.
+def test_facets_turned_by_a_rotation_engine(tmp_path):
+    from yade import ForceResetter, NewtonIntegrator, RotationEngine
+    triangles = [np.array([[0.15, -0.06, 0.0], [0.15, 0.06, 0.0], [0.1, 0.0, 0.1]]),
+                 np.array([[0.0, 0.0, -0.15], [0.1, 0.05, -0.1], [-0.1, 0.0, -0.12]])]
+    ids = [O.bodies.append(utils.facet([Vector3(*p) for p in t], fixed=True)) for t in triangles]
+    centre = np.array([0.01, 0.0, -0.02])
+    O.engines = [ForceResetter(), RotationEngine(ids=ids, rotationAxis=(0, 1, 0), angularVelocity=3,
+                                                 rotateAroundZero=True, zeroPoint=tuple(centre)),
+                 NewtonIntegrator(gravity=(0, 0, 0))]
+    O.dt = 1e-3
+    O.run(250, True)
+    O.forces.addF(ids[1], Vector3(1, 2, 3))
+    _, arrays = read_piece(write_partners_vtp(str(tmp_path / "drum.vtp")))
+    turned = [(t - centre) @ rotation(np.array([0, 1, 0]), 3 * O.time).T + centre for t in triangles]
+    np.testing.assert_allclose(arrays["Points"], np.vstack(turned), atol=1e-12)
+    np.testing.assert_array_equal(arrays["connectivity"], range(6))
+    np.testing.assert_array_equal(arrays["force"], [[0, 0, 0], [1, 2, 3]])
+
+
+def test_a_scene_without_facets_or_boxes_writes_an_empty_piece(tmp_path):
+    O.bodies.append(utils.wall(0, axis=2))
+    piece, arrays = read_piece(write_partners_vtp(str(tmp_path / "none.vtp")))
+    assert piece.get("NumberOfPoints") == "0" and piece.get("NumberOfPolys") == "0"
+    assert len(arrays["Points"]) == 0 and len(arrays["body_id"]) == 0 and arrays["force"].shape == (0, 3)
+
+
+def test_series_with_partners_has_them_as_the_last_part(tmp_path):
+    rm.add_body(rm.Mesh.icosphere(0.5, 0), pos=(0, 0, 0), material=RUBBER)
+    O.bodies.append(utils.facet([(0, 0, -1), (1, 0, -1), (0, 1, -1)]))
+    for spheres, parts in ((False, ["0", "1"]), (True, ["0", "1", "2"])):
+        folder = tmp_path / str(spheres)
+        VtkSeries(str(folder), prefix="drum", spheres=spheres, partners=True).write()
+        datasets = ElementTree.parse(folder / "drum.pvd").getroot().findall("Collection/DataSet")
+        assert [d.get("part") for d in datasets] == parts
+        assert datasets[-1].get("file") == "drum_partners_00000000.vtp"
+        piece, arrays = read_piece(folder / datasets[-1].get("file"))
+        assert piece.get("NumberOfPolys") == "1"
+        np.testing.assert_array_equal(arrays["Points"], [[0, 0, -1], [1, 0, -1], [0, 1, -1]])
