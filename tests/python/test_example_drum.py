@@ -1,7 +1,7 @@
 """scripts/example_drum.py, scene S7 of doc/scenes.md: the drum of Facets the script makes (24 panels, two end caps,
 4 lifters), the lattice it starts the placement from, the scene it builds for roundedmesh and for YADE's clumps, the
-drum turned by RotationEngine in the ParaView export, and a short run from the placement: nothing touches at the
-start, nothing leaves the drum, every output is written and the frames hold the Facets."""
+drum turned by RotationEngine in the ParaView export, and a short run from the shipped placement (no pair deeper
+than START_OVERLAP at the start): nothing leaves the drum, every output is written and the frames hold the Facets."""
 import csv
 import importlib.util
 import json
