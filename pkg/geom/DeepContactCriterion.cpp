@@ -17,10 +17,6 @@ bool inBody2(const PlacedMesh& body2, const Vector3r& x, Real slack = 0) {
   return insideRoundedSolid(body2.mesh, body2.rotation.transpose() * (x - body2.translation), slack);
 }
 
-}  // namespace
-
-namespace {
-
 // Where the segment from `from` to `to` crosses triangle abc (Moller-Trumbore), as a parameter in (0, 1]; -1 if it
 // does not (a segment in the triangle's plane does not pass through it).
 Real crossing(const Vector3r& from, const Vector3r& to, const Vector3r& a, const Vector3r& b, const Vector3r& c) {
@@ -68,7 +64,6 @@ bool pathInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, const 
   const RoundedTriangle& exit = mesh.rounded(last);
   return (x - exit.sphereCentre).squaredNorm() <= exit.radius * exit.radius;
 }
-
 
 bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom) {
   const RoundedTriangle& p = mesh1.rounded(s);

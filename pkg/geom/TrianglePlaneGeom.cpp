@@ -58,11 +58,6 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
 
 namespace {
 
-// A point of the face's plane in its outline's coordinates.
-Vector2r toSheet(const ContactFace& face, const Vector3r& x) {
-  return Vector2r((x - face.origin).dot(face.tangent1), (x - face.origin).dot(face.tangent2));
-}
-
 // How far p, inside a convex outline, lies from its boundary.
 Real distanceToEdge(const ConvexPolygon& outline, const Vector2r& p) {
   Real nearest = std::numeric_limits<Real>::infinity();
@@ -105,7 +100,7 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
       const Real behind =
           rounded.normal.dot(mesh.vertices()[mesh.triangles()[t][0]] - onSheet) / rounded.normal.dot(face.normal);
       if ((behind > 0 && !pathInsideBody(mesh, t, onSheet + behind * face.normal, onSheet)) ||
-          !(geom.effectiveOverlap <= distanceToEdge(*face.faceOutline, toSheet(face, onSheet))))
+          !(geom.effectiveOverlap <= distanceToEdge(*face.faceOutline, faceCoordinates(face, onSheet))))
         result = {Rejection::ThroughBody};
     }
     out.add(result, geom);

@@ -26,6 +26,11 @@ struct ContactFace {
   bool sheet = false;
 };
 
+// A point x of the face's plane in the (t1, t2) coordinates of its outline, relative to its origin.
+inline Vector2r faceCoordinates(const ContactFace& face, const Vector3r& x) {
+  return Vector2r((x - face.origin).dot(face.tangent1), (x - face.origin).dot(face.tangent2));
+}
+
 // With CurvatureModel::Principal a contact the circle accepts then takes the ellipse of EllipticalContact.hpp.
 GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactFace& face,
                            const RelativeMotion& motion, PressureGeom& geom,

@@ -82,10 +82,8 @@ TEST(FlatPartners, AFacetPushesOnlyWhereTheBodyReachesIt) {
   face.normal = -up;
   face.tangent1 = face.normal.unitOrthogonal();
   face.tangent2 = face.normal.cross(face.tangent1);
-  auto inFace = [&](const Vector3r& x) {
-    return Vector2r((x - face.origin).dot(face.tangent1), (x - face.origin).dot(face.tangent2));
-  };
-  const ConvexPolygon outline = ConvexPolygon::triangle(inFace(corners[0]), inFace(corners[1]), inFace(corners[2]));
+  const ConvexPolygon outline = ConvexPolygon::triangle(faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]),
+                                                        faceCoordinates(face, corners[2]));
   face.faceOutline = &outline;
   faceGeometry(ring.shape(), face, RelativeMotion(), GeomOutput(geoms));
   ASSERT_FALSE(geoms.empty());
