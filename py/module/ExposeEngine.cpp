@@ -392,9 +392,17 @@ bp::tuple partnerContact(const BodyMesh& mesh, const Vector3r& pos, const Quater
   const int id = bp::extract<int>(partner.attr("id"));
   const PartnerShape shape = yadeShape(partner, id);
   const bp::object s = partner.attr("state");
-  const BodyState partnerState = bodyState(bp::extract<Vector3r>(s.attr("pos")), bp::extract<Quaternionr>(s.attr("ori")),
-                                           bp::extract<Vector3r>(s.attr("vel")),
-                                           bp::extract<Vector3r>(s.attr("angVel")), 2);
+  BodyState partnerState;
+  partnerState.position = bp::extract<Vector3r>(s.attr("pos"));
+  partnerState.orientation = bp::extract<Quaternionr>(s.attr("ori"));
+  partnerState.velocity = bp::extract<Vector3r>(s.attr("vel"));
+  partnerState.angularVelocity = bp::extract<Vector3r>(s.attr("angVel"));
+  if (!(partnerState.position.allFinite() && partnerState.orientation.coeffs().allFinite() &&
+        partnerState.orientation.norm() > 0 && partnerState.velocity.allFinite() &&
+        partnerState.angularVelocity.allFinite()))
+    throw std::invalid_argument("partner (body " + std::to_string(id) +
+                                "): its state (pos, ori, vel, angVel) must be finite, with a nonzero ori");
+  partnerState.orientation.normalize();
   return asTuple(roundedmesh::partnerContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
                                              shape, partnerState, partnerMaterial,
                                              pressureOptions(gamma, regime, curvature), details, frictionLaw(friction)));

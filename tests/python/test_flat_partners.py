@@ -120,3 +120,10 @@ def test_a_bear_dropped_on_a_box_lands_and_rests():
         assert O.bodies[bear].state.pos[2] > top
         weight = O.bodies[bear].state.mass * resting.G
         assert abs(-O.forces.f(box)[2] - weight) < 1e-6 * weight
+
+
+def test_partner_contact_names_a_partner_whose_state_is_not_finite(meshes):
+    wall = utils.wall(0, axis=2, sense=1)
+    wall.state.vel = Vector3(float("nan"), 0, 0)
+    with pytest.raises(ValueError, match=r"partner \(body -?\d+\): its state \(pos, ori, vel, angVel\) must be finite"):
+        rm.partner_contact(meshes["sphere"], (0, 0, 0.03), Quaternion.Identity, wall, BODY, FLOOR)
