@@ -1,7 +1,7 @@
 // One contact evaluated once, without a scene, through the engine's own stages (resolvePair): a rounded body
 // against a partner (a plane, a YADE Wall, Box, Facet or analytic Sphere), or against another rounded body. What
-// rm.plane_contact, rm.partner_contact, rm.sphere_contact, rm.body_contact and rm.triangle_contacts return, for validation and for looking inside a
-// contact. Forces [N] and torques [N m] global, each torque about its own body's position; with `details`, every
+// rm.plane_contact, rm.partner_contact, rm.sphere_contact, rm.body_contact and rm.triangle_contacts return, for
+// validation and for looking inside a contact. Forces [N] and torques [N m] global, each torque about its own body's position; with `details`, every
 // triangle contact as resolvePair sees it. `friction`: the tangential law; the spring of FrictionLaw::Spring starts
 // here, so only its damping acts (a contact with no history). Throws std::invalid_argument naming a material parameter out of range.
 #pragma once

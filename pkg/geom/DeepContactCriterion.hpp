@@ -33,6 +33,12 @@ struct PlacedMesh {
 // it from a limb behind the sheet leaves the bear.
 bool pathInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x);
 
+// Where the line x + u d meets the plane of triangle s: u (d not parallel to the plane; for a contact's c_eff and
+// n12, the triangle faces n12, Eq. B.5).
+inline Real lineToTriangle(const RoundedMesh& mesh, int s, const Vector3r& x, const Vector3r& d) {
+  return mesh.rounded(s).normal.dot(mesh.vertices()[mesh.triangles()[s][0]] - x) / mesh.rounded(s).normal.dot(d);
+}
+
 // The segment test for triangle s of mesh1 and triangle t of body 2 in contact as `geom` (body 1's frame).
 bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom);
 

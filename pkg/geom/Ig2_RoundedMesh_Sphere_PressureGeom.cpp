@@ -17,7 +17,6 @@ void Ig2_RoundedMesh_Sphere_PressureGeom(const RoundedMesh& mesh, const Sphere& 
   mesh.tree().query([&](const AlignedBox3r& b) { return b.intersects(box); }, [&](int t) {
     GeomTest result = triangleSphereGeom(mesh, t, partner, motion, geom, model);
     if (result && geom.effectiveOverlap > shallow) {
-      const RoundedTriangle& rounded = mesh.rounded(t);
       const Vector3r onPlane = planePoint(geom, geom.effectivePoint);
       // The line along n12 through c_eff, `lateral` off the line of centres: it must meet the sphere at all (a flat
       // triangle's circle a = sqrt(delta_s R*) reaches past the sphere's radius once delta_s does), and the sphere's
@@ -25,10 +24,9 @@ void Ig2_RoundedMesh_Sphere_PressureGeom(const RoundedMesh& mesh, const Sphere& 
       const Vector3r lateral = onPlane - geom.centre;
       const Real across = sphere.radius * sphere.radius - lateral.squaredNorm();
       const Vector3r deepest = centre + lateral - std::sqrt(std::max(across, Real(0))) * geom.normal;
-      // Where that line meets triangle t (c_eff is in its projection S).
-      const Real along = rounded.normal.dot(mesh.vertices()[mesh.triangles()[t][0]] - onPlane) /
-                         rounded.normal.dot(geom.normal);
-      if (!(across > 0) || !pathInsideBody(mesh, t, onPlane + along * geom.normal, deepest))
+      // From where that line meets triangle t (c_eff is in its projection S).
+      const Vector3r onTriangle = onPlane + lineToTriangle(mesh, t, onPlane, geom.normal) * geom.normal;
+      if (!(across > 0) || !pathInsideBody(mesh, t, onTriangle, deepest))
         result = {Rejection::ThroughBody};
     }
     out.add(result, geom);

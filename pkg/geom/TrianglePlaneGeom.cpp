@@ -95,10 +95,8 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
     if (result && face.sheet) {
       // The line along n12 through c_eff meets triangle t (c_eff is in its projection S) `behind` the sheet, or in
       // front of it, where only the cap's bulge crosses the sheet and c_eff lies between the triangle and the cap.
-      const RoundedTriangle& rounded = mesh.rounded(t);
       const Vector3r onSheet = planePoint(geom, geom.effectivePoint);
-      const Real behind =
-          rounded.normal.dot(mesh.vertices()[mesh.triangles()[t][0]] - onSheet) / rounded.normal.dot(face.normal);
+      const Real behind = lineToTriangle(mesh, t, onSheet, face.normal);
       if ((behind > 0 && !pathInsideBody(mesh, t, onSheet + behind * face.normal, onSheet)) ||
           !(geom.effectiveOverlap <= distanceToEdge(*face.faceOutline, faceCoordinates(face, onSheet))))
         result = {Rejection::ThroughBody};
