@@ -24,7 +24,7 @@ const HertzMaterial kBox{5e6, 0.4, 2000, 0.01};
 
 std::ifstream open(const std::string& path, std::ios::openmode mode = std::ios::in) {
   std::ifstream in(path, mode);
-  if (!in) malformed(path, "cannot be read (run scripts/record_s1_scene.py)");
+  if (!in) malformed(path, "cannot be read (run scripts/benchmarks/record_s1_scene.py)");
   return in;
 }
 

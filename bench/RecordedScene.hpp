@@ -1,4 +1,4 @@
-// Scene S1 as scripts/record_s1_scene.py recorded it (bench/data): 250 gummy bears and the box's five YADE
+// Scene S1 as scripts/benchmarks/record_s1_scene.py recorded it (bench/data): 250 gummy bears and the box's five YADE
 // Walls, with S1's materials, as a ContactModel; the settled packing's states; and two trajectories from it,
 // the first steps of shaking and as many steps in the standing box. Lets the benchmark and the tests run the
 // complete contact step on a real packing, without YADE or Python.

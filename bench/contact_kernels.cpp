@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/ContactStep.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Plane_PressureGeom.hpp"
 #include "pkg/math/CirclePolygonArea.hpp"
 #include "pkg/shape/BodyMesh.hpp"
@@ -55,7 +55,7 @@ void BM_SphereContactStep(benchmark::State& state) {
   data.bodyStates[0].position = Vector3r(0.01, 0.02, 0.05 + 0.025 - 0.00125);
   data.bodyStates[0].velocity = Vector3r(0, 0, -0.1);
   for (auto _ : state) {
-    RoundedMeshEngine(model, data);
+    contactForces(model, data);
     benchmark::DoNotOptimize(data.bodyWrenches[0].force);
   }
   state.SetLabel(std::to_string(mesh.shape().vertices().size()) + " nodes on a " + (box ? "box" : "plane"));

@@ -1,6 +1,6 @@
 // Google Benchmark of the complete C++ contact step on scene S1 with 250 gummy bears (bench/data, recorded
-// by scripts/record_s1_scene.py), without YADE or Python, and of its two per-contact stages alone:
-//   BM_S1Step/threads/motion/skin/steps/near/friction/curvature   one RoundedMeshEngine step; motion = 0: the settled
+// by scripts/benchmarks/record_s1_scene.py), without YADE or Python, and of its two per-contact stages alone:
+//   BM_S1Step/threads/motion/skin/steps/near/friction/curvature   one contactForces step (stages 2-4 of ContactStep.hpp); motion = 0: the settled
 //                              packing again and again (the lists kept between steps stay valid), 1: the recorded
 //                              steps of shaking in order, forth and back (the lists are rebuilt as the bodies move),
 //                              2: the recorded steps of the packing resting in the standing box (it rattles);
@@ -16,7 +16,9 @@
 #include <omp.h>
 
 #include "bench/RecordedScene.hpp"
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/PairGeometry.hpp"
+#include "pkg/engine/PairLoad.hpp"
+#include "pkg/engine/ContactStep.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -65,13 +67,13 @@ void BM_S1Step(benchmark::State& state) {
     scene().setStates(data, *trajectory, 0);
   else
     scene().setStates(data);
-  for (int warmup = 0; warmup < 2; ++warmup) RoundedMeshEngine(model, data);  // builds and trims the lists
+  for (int warmup = 0; warmup < 2; ++warmup) contactForces(model, data);  // builds and trims the lists
   ContactStatistics total;
   StageTimes times;
   long steps = 0;
   for (auto _ : state) {
     if (trajectory) scene().setStates(data, *trajectory, frameAt(++steps, static_cast<int>(trajectory->size())));
-    RoundedMeshEngine(model, data);
+    contactForces(model, data);
     total += data.statistics;
     times.broadPhase += data.times.broadPhase;
     times.pairs += data.times.pairs;
@@ -120,7 +122,7 @@ struct SettledStep {
 
   SettledStep() {
     scene().setStates(data);
-    RoundedMeshEngine(scene().model, data);
+    contactForces(scene().model, data);
     for (const BodyPair& pair : data.pairs) {
       ContactStatistics statistics;
       pairGeometry(scene().model, data, pair, geoms.emplace_back(), statistics, &data.candidateLists[pair.neighbour]);

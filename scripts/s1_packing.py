@@ -18,10 +18,10 @@ Runs, each in its own process and folder <output>/<run>:
     pear, gummy_bear
                   Mesh.reference_shape (~486 and ~554 nodes asked)
     gummy_bear_clumps, gummy_bear_level_sets (--peers clumps level_sets)
-                  YADE's own representations of the gummy bear on the same scene (roundedmesh.peers): 40-sphere
+                  YADE's own representations of the gummy bear on the same scene (roundedmesh.study.peers): 40-sphere
                   clumps of the shape's primitives and level-set bodies of its distance field (1 mm grid, 511
                   surface nodes), with YADE's Hertz-Mindlin law, its damping ratio matched to Eq. 7 at the
-                  overlap under one bear's weight (the mapping: roundedmesh.peers and doc/s1-packing.md)
+                  overlap under one bear's weight (the mapping: roundedmesh.study.peers and doc/s1-packing.md)
 Every body has the volume of the sphere of radius 0.025 m. Materials (S1): particles E = 1e6 Pa, nu = 0.4,
 2000 kg/m^3; box E = 5e6 Pa, nu = 0.4; normal damping constant A = 0.01 s (Eq. 7) on both; no friction.
 NewtonIntegrator without numerical damping, gravity (0, 0, -9.81) m/s^2. The lattice: layers of 4 x 4 nodes at
@@ -199,14 +199,14 @@ def main_process(args):
             if subprocess.run(child_command(args, run, check=False), env=environment).returncode:
                 raise SystemExit(f"s1_packing.py: the run {run} failed (its output so far is in "
                                  f"{os.path.join(args.output, run)})")
-    import s1_figures  # noqa: E402  (matplotlib and YADE only now, after the runs)
+    import s1_figures  # noqa: E402  (scripts/studies/s1_figures.py: matplotlib and YADE only now, after the runs)
     s1_figures.make_all(args.output, RADIUS, SUBMERGED_HEIGHT)
 
 
 if __name__ == "__main__":
     ARGS = parse(sys.argv[1:])
     if not ARGS.run:
-        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "studies"))
         main_process(ARGS)
         raise SystemExit(0)
 
@@ -219,10 +219,10 @@ from yade import ForceResetter, HarmonicMotionEngine, NewtonIntegrator, O, PyRun
 from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
-from roundedmesh import peers  # noqa: E402
-from roundedmesh.benchmarking import machine  # noqa: E402
 from roundedmesh.export import VtkSeries  # noqa: E402
 from roundedmesh.progress import Progress  # noqa: E402
+from roundedmesh.study import peers  # noqa: E402
+from roundedmesh.study.benchmarking import machine  # noqa: E402
 
 PARTICLE = rm.HertzMaterial(young=peers.PARTICLE["young"], poisson=peers.PARTICLE["poisson"],
                             density=peers.PARTICLE["density"], damping=peers.DAMPING_CONSTANT)
@@ -291,7 +291,7 @@ def build_roundedmesh(run, poses):
 
 
 def build_peer(run, poses):
-    """YADE's own representation `run` at `poses` (roundedmesh.peers; the walls are bodies 0-4)."""
+    """YADE's own representation `run` at `poses` (roundedmesh.study.peers; the walls are bodies 0-4)."""
     if run.endswith("_clumps"):
         bodies = peers.build_clumps(poses, count=40, name=PEER_SHAPE)
         description = "40-sphere clumps, YADE's Hertz-Mindlin"
@@ -615,4 +615,5 @@ def plot_run(path, rows, args, run):
     plt.close(figure)
 
 
-run_one(ARGS, ARGS.run)
+if __name__ == "__main__":
+    run_one(ARGS, ARGS.run)

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <utility>
 
-#include "pkg/geom/DeepContactCriterion.hpp"
+#include "pkg/bound/CapReach.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -133,7 +133,7 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
     });
     return;
   }
-  // Deeper (a pair past the Hertz range holds a list as deep as the bodies: RoundedMeshEngine.cpp), the same pairs
+  // Deeper (a pair past the Hertz range holds a list as deep as the bodies: pkg/engine/CandidateLists.hpp), the same pairs
   // without searching every pair of the trees within that depth: those within shallow + skin from the trees, the
   // others among the few triangles whose caps reach the other body (the ones in or at it).
   TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, shallow + skin, [&](int s, int t) {

@@ -25,6 +25,10 @@ void ContactData::resize(const ContactModel& model) {
   partnerClumps.resize(model.partners.size(), -1);
   bodyWrenches.resize(model.bodies.size());
   partnerWrenches.resize(model.partners.size());
+  bodyMasses.resize(model.bodies.size());
+  partnerMasses.resize(model.partners.size());
+  bodyInertias.resize(model.bodies.size(), Vector3r::Zero());
+  partnerInertias.resize(model.partners.size(), Vector3r::Zero());
 }
 
 namespace {

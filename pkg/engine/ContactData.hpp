@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "pkg/engine/BodyState.hpp"
@@ -144,6 +145,17 @@ struct CandidateList {
 struct ContactData {
   std::vector<BodyState> bodyStates;
   std::vector<BodyState> partnerStates;
+  // Masses [kg] and principal moments of inertia [kg m^2] (a rounded body's in its mesh's frame) for the time-step
+  // check (CriticalTimeStep.hpp, stabilityLimit): a partner's are 0 unless it moves under forces; 0 (the default)
+  // puts no limit.
+  std::vector<Real> bodyMasses, partnerMasses;
+  std::vector<Vector3r> bodyInertias, partnerInertias;
+  // What the time step was last found stable for (ContactStep.hpp, checkTimeStep); NaN: nothing yet.
+  struct CheckedTimeStep {
+    Real timeStep = std::numeric_limits<Real>::quiet_NaN();
+    std::vector<Real> bodyMasses, partnerMasses;
+    std::vector<Vector3r> bodyInertias, partnerInertias;
+  } checkedTimeStep;
   // The clump each body and partner belongs to (YADE's clumpId), -1 for none: members of one clump do not
   // touch each other.
   std::vector<int> bodyClumps;
@@ -171,11 +183,9 @@ struct ContactData {
   std::vector<std::vector<TriangleContact>> pairContacts;
   std::vector<std::vector<PressureGeom>> geoms;   // scratch: one per thread
 
-  // The stop rules (StopRules.hpp): this step's pairs, those of the last step kept (valid if `kept`), and the
-  // reasons to stop found in this step.
+  // The stop rules (StopRules.hpp): this step's pairs, and those of the last step kept (valid if `kept`).
   std::vector<PairRecord> pairRecords, keptRecords;
   bool kept = false;
-  std::vector<StopReason> stops;
 
   // The state and clump of an engine index: a body's, or past them a partner's.
   const BodyState& state(int index) const {
@@ -187,7 +197,7 @@ struct ContactData {
     return index < bodyCount ? bodyClumps[index] : partnerClumps[index - bodyCount];
   }
 
-  // Sizes every array for `model`; states are left for the caller to fill.
+  // Sizes every array for `model`; states and masses are left for the caller to fill.
   void resize(const ContactModel& model);
 
   // Every active spring, with its pair (engine indices, the pair's own order), sorted by pair.

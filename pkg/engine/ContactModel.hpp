@@ -5,6 +5,7 @@
 // Indices into `bodies` and `partners` are the engine's; `id` is YADE's body id.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <variant>
 #include <vector>
@@ -40,6 +41,13 @@ struct RoundedBody {
   HertzMaterial material;
   Real equivalentRadius;  // radius of the sphere of the same volume [m]
 };
+
+// The contact engine's view of a body made of `mesh` (a BodyMesh, pkg/shape/BodyMesh.hpp, or anything with its
+// sharedShape() and volume() [m^3]): its shape, material and volume-equivalent radius.
+template <class Mesh>
+RoundedBody roundedBody(int id, const Mesh& mesh, const HertzMaterial& material) {
+  return {id, mesh.sharedShape(), material, std::cbrt(3 * mesh.volume() / (4 * M_PI))};
+}
 
 struct Partner {
   int id;

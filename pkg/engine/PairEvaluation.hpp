@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/ContactStep.hpp"
 
 namespace roundedmesh {
 

@@ -1,9 +1,10 @@
 #include "pkg/engine/SpherePair.hpp"
 
 #include "pkg/common/Overloaded.hpp"
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/PairFriction.hpp"
+#include "pkg/engine/PairGeometry.hpp"
+#include "pkg/engine/PairLoad.hpp"
 #include "pkg/geom/Ig2_Sphere_Partner_PressureGeom.hpp"
-#include "pkg/phys/HertzPhys.hpp"
 
 namespace roundedmesh {
 
@@ -39,11 +40,7 @@ PairResult resolveSpherePair(const ContactModel& model, const ContactData& data,
   PairResult result;
   result.statistics.bodyPairs = 1;
   if (!found) {
-    // Not touching: the spring lets go, and what it held is dissipated.
-    if (spring) {
-      if (data.timeStep > 0) result.summary.frictionPower = spring->energy / data.timeStep;
-      *spring = TangentialSpring();
-    }
+    if (spring) releaseSpring(*spring, data.timeStep, result.summary);  // not touching: the spring lets go
     return result;
   }
   result.statistics.touchingPairs = 1;
@@ -54,23 +51,15 @@ PairResult resolveSpherePair(const ContactModel& model, const ContactData& data,
   const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, whole);
   result.summary.add(geom, load);
   TangentialLoad friction;
-  if ((!(phys.friction > 0) || model.friction == FrictionLaw::Viscous) && spring && spring->active()) {
-    // No spring: frictionless now (a material changed), or the viscous law.
-    if (data.timeStep > 0) result.summary.frictionPower += spring->energy / data.timeStep;
-    *spring = TangentialSpring();
-  }
+  dropUnusedSpring(phys, model.friction, spring, data.timeStep, result.summary);
   if (model.friction == FrictionLaw::Viscous) {
     friction = coulombFriction(geom, load, phys);
     result.summary.frictionPower += -friction.force.dot(geom.slip);
   } else if (phys.friction > 0) {
     // One contact point: the spring at c, without twist.
-    SpringContact contact;
-    contact.normal = geom.normal;
-    contact.slip = geom.slip;
-    contact.spin = motion.angular.dot(geom.normal);
-    contact.frameSpin = 0.5 * (s1.angularVelocity + s2.angularVelocity).dot(geom.normal);
-    contact.normalForce = load.force;
-    contact.stiffness = phys.stiffnessRatio * 1.5 * load.elasticForce / geom.sphereOverlap;
+    const SpringContact contact =
+        springContact(geom.normal, geom.slip, motion.angular.dot(geom.normal), s1, s2, load.force,
+                      phys.stiffnessRatio * 1.5 * load.elasticForce / geom.sphereOverlap);
     TangentialSpring fresh;
     TangentialSpring& held = spring ? *spring : fresh;
     const SpringLoad spun = tangentialSpring(contact, phys, spring ? data.timeStep : 0, held);

@@ -64,8 +64,8 @@ Real sideSize(const ContactModel& model, int index) {
   return kInfinity;
 }
 
-void checkStopRules(const ContactModel& model, ContactData& data) {
-  data.stops.clear();
+std::vector<StopReason> checkStopRules(const ContactModel& model, ContactData& data) {
+  std::vector<StopReason> stops;
   std::vector<PairRecord>& records = data.pairRecords;
   records.resize(data.pairs.size());
   for (size_t k = 0; k < data.pairs.size(); ++k) {
@@ -82,14 +82,14 @@ void checkStopRules(const ContactModel& model, ContactData& data) {
     r.side = r.flat ? faceSide(*shape, data.state(pair.other), r.position) : 0;
   }
   // data.pairs follow the neighbour list's order, sorted by (body, other); kept for the search below.
-  if (!data.kept) return;
+  if (!data.kept) return stops;
   const std::vector<PairRecord>& last = data.keptRecords;
   for (const PairRecord& r : records) {
     const Real size = std::min(sideSize(model, r.body), sideSize(model, r.other));
     if (!(r.overlap > model.stopOverlap * size)) continue;
     const auto found = std::lower_bound(last.begin(), last.end(), r, before);
     const Real previous = found != last.end() && !before(r, *found) ? found->overlap : 0;
-    if (r.overlap > previous) data.stops.push_back({StopCause::Overlap, r.body, r.other, r.overlap, size, r.point});
+    if (r.overlap > previous) stops.push_back({StopCause::Overlap, r.body, r.other, r.overlap, size, r.point});
   }
   // Every flat partner a body was near in the last step, whether or not their bounds still overlap.
   for (const PairRecord& r : last) {
@@ -100,15 +100,16 @@ void checkStopRules(const ContactModel& model, ContactData& data) {
     if (crossed(shape, partner, r.position, r.side, now, faceSide(shape, partner, now))) {
       const auto found = std::lower_bound(records.begin(), records.end(), r, before);
       const bool touching = found != records.end() && !before(r, *found);
-      data.stops.push_back({StopCause::CentreCrossed, r.body, r.other, touching ? found->overlap : 0,
+      stops.push_back({StopCause::CentreCrossed, r.body, r.other, touching ? found->overlap : 0,
                             sideSize(model, r.body), touching ? found->point : now});
     }
   }
   // Crossings first, then the deepest overlap for its size.
-  std::stable_sort(data.stops.begin(), data.stops.end(), [](const StopReason& a, const StopReason& b) {
+  std::stable_sort(stops.begin(), stops.end(), [](const StopReason& a, const StopReason& b) {
     if (a.cause != b.cause) return a.cause == StopCause::CentreCrossed;
     return a.overlap / a.size > b.overlap / b.size;
   });
+  return stops;
 }
 
 void commitStep(ContactData& data) {
@@ -120,8 +121,9 @@ FastBody fastestBody(const ContactModel& model, const ContactData& data, Real dt
   FastBody fastest;
   const int bodyCount = static_cast<int>(model.bodies.size());
   auto consider = [&](int index, Real speed) {
-    const Real fraction = speed * dt / (kDeepestOverlap * sideSize(model, index));
-    if (fraction > fastest.fraction) fastest = {index, speed, fraction};
+    const Real depth = kDeepestOverlap * sideSize(model, index);
+    const Real fraction = speed * dt / depth;
+    if (fraction > fastest.fraction) fastest = {index, speed, fraction, depth};
   };
   for (int b = 0; b < bodyCount; ++b) {
     const BodyState& s = data.bodyStates[b];

@@ -26,8 +26,9 @@ namespace roundedmesh {
 // that are not sphere bodies: a Sphere's radius, infinite for flat ones. `index` as in BodyPair.
 Real sideSize(const ContactModel& model, int index);
 
-// After RoundedMeshEngine: data.pairRecords for this step and, against those of the last kept step, data.stops.
-void checkStopRules(const ContactModel& model, ContactData& data);
+// After contactForces (ContactStep.hpp): data.pairRecords for this step and, against those of the last kept step,
+// the reasons to stop, crossings first, then the deepest overlap for its size.
+std::vector<StopReason> checkStopRules(const ContactModel& model, ContactData& data);
 
 // Keeps the step: its pair records become the ones the next step is compared with.
 void commitStep(ContactData& data);
@@ -37,7 +38,8 @@ void commitStep(ContactData& data);
 struct FastBody {
   int body = -1;        // engine index, -1 if nothing moves
   Real speed = 0;       // [m/s]
-  Real fraction = 0;    // speed * dt / (kDeepestOverlap * size)
+  Real fraction = 0;    // speed * dt / depth
+  Real depth = 0;       // its contact depth kDeepestOverlap * size [m]
 };
 FastBody fastestBody(const ContactModel& model, const ContactData& data, Real dt);
 

@@ -6,17 +6,6 @@
 namespace roundedmesh {
 namespace {
 
-// Whether x (the mesh's frame) lies in the mesh's rounded solid: within its tallest cap of the flat solid, up to the
-// distance field's tolerance (and `slack` [m] more).
-bool insideRoundedSolid(const RoundedMesh& mesh, const Vector3r& x, Real slack = 0) {
-  const SolidDistance& solid = mesh.solidDistance();
-  return solid.at(x) <= mesh.maxCapHeight() + solid.tolerance() + slack;
-}
-
-bool inBody2(const PlacedMesh& body2, const Vector3r& x, Real slack = 0) {
-  return insideRoundedSolid(body2.mesh, body2.rotation.transpose() * (x - body2.translation), slack);
-}
-
 // Where the segment from `from` to `to` crosses triangle abc (Moller-Trumbore), as a parameter in (0, 1]; -1 if it
 // does not (a segment in the triangle's plane does not pass through it).
 Real crossing(const Vector3r& from, const Vector3r& to, const Vector3r& a, const Vector3r& b, const Vector3r& c) {
@@ -75,12 +64,7 @@ bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2,
   const Vector3r q1 = p.sphereCentre + lateral + std::sqrt(std::max(p.radius * p.radius - hSq, Real(0))) * geom.normal;
   const Vector3r q2 = sphere2 + lateral - std::sqrt(std::max(q.radius * q.radius - hSq, Real(0))) * geom.normal;
   const Vector3r middle = 0.5 * (q1 + q2);
-  return inBody2(body2, q1) && inBody2(body2, middle) && insideRoundedSolid(mesh1, q2) && insideRoundedSolid(mesh1, middle);
-}
-
-bool capReaches(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, Real slack) {
-  const RoundedTriangle& cap = mesh1.rounded(s);
-  return inBody2(body2, cap.circumcentre, cap.circumradius + slack);
+  return insidePlaced(body2, q1) && insidePlaced(body2, middle) && insideRoundedSolid(mesh1, q2) && insideRoundedSolid(mesh1, middle);
 }
 
 }  // namespace roundedmesh

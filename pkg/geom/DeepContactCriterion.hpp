@@ -8,22 +8,13 @@
 // each point tested against the other body's distance field (SolidDistance.hpp): within its tallest cap
 // (points of the rounded solid lie that close to the flat one) plus the field's tolerance. Shallow pairs are left
 // to Appendix B: the false pairs are as deep as bodies are thick.
-// capReaches is the necessary condition on one triangle that the candidate lists use: cap s, whose points lie
-// within rho_s of its circumcentre, comes within the same tolerance of body 2's solid, up to `slack` [m] of
-// motion to come.
+// The candidate lists use the necessary condition on one triangle of each pair, capReaches (CapReach.hpp).
 #pragma once
 
+#include "pkg/bound/CapReach.hpp"
 #include "pkg/geom/PressureGeom.hpp"
-#include "pkg/shape/RoundedMesh.hpp"
 
 namespace roundedmesh {
-
-// Body 2 in body 1's frame: x1 = rotation * x2 + translation.
-struct PlacedMesh {
-  const RoundedMesh& mesh;
-  const Matrix3r& rotation;
-  const Vector3r& translation;
-};
 
 // Whether the straight path from `from`, a point of triangle s, into the solid to x (the mesh's frame) ends inside
 // the mesh's rounded solid: it crosses the flat surface an even number of times on the way (each triangle but s
@@ -41,8 +32,5 @@ inline Real lineToTriangle(const RoundedMesh& mesh, int s, const Vector3r& x, co
 
 // The segment test for triangle s of mesh1 and triangle t of body 2 in contact as `geom` (body 1's frame).
 bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom);
-
-// Triangle s of mesh1 (body 1's frame) against body 2.
-bool capReaches(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, Real slack);
 
 }  // namespace roundedmesh

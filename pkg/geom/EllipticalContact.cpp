@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "pkg/law/EllipticalHertz.hpp"
+#include "pkg/geom/EllipticalHertz.hpp"
 
 namespace roundedmesh {
 namespace {

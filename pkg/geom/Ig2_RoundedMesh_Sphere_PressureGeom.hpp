@@ -4,7 +4,7 @@
 // deep-contact criterion asks of two bodies: the sphere's deepest point on the line along n12 through c_eff lies in
 // the body's rounded solid (the path to it from the triangle stays inside, pathInsideBody). Past the Hertz range a
 // flat triangle's large sphere otherwise swallows a small sphere that only grazes the body (a 10 mm sphere beside a
-// gummy bear in the drum of scripts/example_drum.py: 11.6 mm 'deep' where it came within 0.7 mm of the mesh).
+// gummy bear in the drum of scripts/examples/example_drum.py: 11.6 mm 'deep' where it came within 0.7 mm of the mesh).
 // Inputs in body 1's frame: the sphere's centre, and its motion relative to body 1.
 #pragma once
 

@@ -89,8 +89,4 @@ TriangleSurface BodyMesh::inputFrameSurface() const {
   return s;
 }
 
-RoundedBody roundedBody(int id, const BodyMesh& mesh, const HertzMaterial& material) {
-  return {id, mesh.sharedShape(), material, std::cbrt(3 * mesh.volume() / (4 * M_PI))};
-}
-
 }  // namespace roundedmesh

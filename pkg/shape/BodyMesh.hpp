@@ -10,7 +10,6 @@
 #include <optional>
 #include <vector>
 
-#include "pkg/engine/ContactModel.hpp"
 #include "pkg/shape/MassProperties.hpp"
 #include "pkg/shape/RoundedMesh.hpp"
 #include "pkg/shape/TriangleSurface.hpp"
@@ -69,9 +68,5 @@ class BodyMesh {
   Vector3r inputCentroid_;
   Quaternionr inputOrientation_;
 };
-
-// The contact engine's view of a body made of `mesh` (ContactModel.hpp): its shape, material and
-// volume-equivalent radius.
-RoundedBody roundedBody(int id, const BodyMesh& mesh, const HertzMaterial& material);
 
 }  // namespace roundedmesh

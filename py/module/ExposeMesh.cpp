@@ -9,13 +9,13 @@
 
 #include "pkg/io/MeshFile.hpp"
 #include "pkg/meshing/ImplicitCurvature.hpp"
-#include "pkg/shape/BlendedShape.hpp"
+#include "pkg/meshing/BlendedShape.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/Curvature.hpp"
 #include "pkg/shape/Cylinder.hpp"
 #include "pkg/shape/Distortion.hpp"
 #include "pkg/shape/Icosphere.hpp"
-#include "pkg/shape/Spheroid.hpp"
+#include "pkg/meshing/Spheroid.hpp"
 #include "pkg/shape/SurfaceRepair.hpp"
 #include "py/module/NumpyConversion.hpp"
 

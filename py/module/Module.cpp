@@ -6,12 +6,12 @@
 namespace roundedmesh::python {
 void exposeMesh();
 void exposeMaterial();
-void exposeEngine();
+void exposeContactStep();
 }  // namespace roundedmesh::python
 
 BOOST_PYTHON_MODULE(_core) {
   boost::python::numpy::initialize();
   roundedmesh::python::exposeMesh();
   roundedmesh::python::exposeMaterial();
-  roundedmesh::python::exposeEngine();
+  roundedmesh::python::exposeContactStep();
 }

@@ -17,15 +17,20 @@ bp::object bodyOrNone(const bp::object& bodies, int id) {
   }
 }
 
-// The body's state and clump (YADE's clumpId, -1 for none). A state that is not finite stops the step: a
-// NaN would otherwise spread silently through every contact of the body.
-void readState(const bp::object& body, int id, BodyState& state, int& clump) {
+// The body's state, clump (YADE's clumpId, -1 for none), mass and principal moments of inertia (0 for a body that
+// does not move under forces, when `dynamicOnly`). A state that is not finite stops the step: a NaN would
+// otherwise spread silently through every contact of the body.
+void readState(const bp::object& body, int id, bool dynamicOnly, BodyState& state, int& clump, Real& mass,
+               Vector3r& inertia) {
   const bp::object s = body.attr("state");
   state.position = bp::extract<Vector3r>(s.attr("pos"));
   state.orientation = bp::extract<Quaternionr>(s.attr("ori"));
   state.velocity = bp::extract<Vector3r>(s.attr("vel"));
   state.angularVelocity = bp::extract<Vector3r>(s.attr("angVel"));
   clump = bp::extract<int>(body.attr("clumpId"));
+  const bool moves = !dynamicOnly || bp::extract<bool>(body.attr("dynamic"))();
+  mass = moves ? bp::extract<Real>(s.attr("mass"))() : 0;
+  inertia = moves ? bp::extract<Vector3r>(s.attr("inertia"))() : Vector3r(Vector3r::Zero());
   const char* bad = !state.position.allFinite()                ? "position"
                     : !state.orientation.coeffs().allFinite() ? "orientation"
                     : !state.velocity.allFinite()             ? "velocity"
@@ -87,19 +92,23 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
     const bp::object body = bodyOrNone(bodies, model.bodies[b].id);
     if (body.is_none()) {
       missing.push_back(model.bodies[b].id);
+      data.bodyMasses[b] = 0;  // puts no limit on the time step
       continue;
     }
     requireOwnMaterial(body, model.bodies[b].id, "rounded");
-    readState(body, model.bodies[b].id, data.bodyStates[b], data.bodyClumps[b]);
+    readState(body, model.bodies[b].id, false, data.bodyStates[b], data.bodyClumps[b], data.bodyMasses[b],
+              data.bodyInertias[b]);
   }
   for (size_t p = 0; p < model.partners.size(); ++p) {
     Partner& partner = model.partners[p];
     const bp::object body = bodyOrNone(bodies, partner.id);
     if (body.is_none()) {
       missing.push_back(partner.id);
+      data.partnerMasses[p] = 0;
       continue;
     }
-    readState(body, partner.id, data.partnerStates[p], data.partnerClumps[p]);
+    readState(body, partner.id, true, data.partnerStates[p], data.partnerClumps[p], data.partnerMasses[p],
+              data.partnerInertias[p]);
     if (partner.sphereBody) {
       requireOwnMaterial(body, partner.id, "sphere");
       partner.shape = sphereShape(body, partner.id);

@@ -11,23 +11,26 @@ discrete element method", Comput. Methods Appl. Mech. Engrg. 277 (2014) 219-238,
     rm.assign_material(floor, rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=1e-3))
     O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
 
-The submodules come with the package (rm.export, rm.progress, rm.scenes, rm.analytic, rm.validation,
-rm.benchmarking, rm.shapes, rm.contact, rm.scene, rm.meshfiles, rm.checkpoint, rm.hertz_reference,
-rm.shape_error, rm.model_choice). See doc/user-guide.md.
+The user's modules come with the package: rm.scene (written as rm.bodies, rm.stepping and rm.readout), rm.contact,
+rm.export, rm.progress, rm.checkpoint, rm.meshfiles, rm.shapes. The code of the validation and the studies (analytic references, the reference scenes,
+YADE's peers, the speed-against-error study, benchmark helpers) is in the subpackage roundedmesh.study, imported
+on first use (`from roundedmesh.study import scenes`, or rm.study.scenes); its modules' old names here
+(rm.validation, `import roundedmesh.scenes`, ...) still work, with a DeprecationWarning. See doc/user-guide.md.
 
 rm.cheapest_model(shape, error) is the cheapest mesh and regime that meets a force error according to the
 speed-against-error study (doc/speed-vs-error.md).
 """
+import importlib
+
 from . import _yade  # noqa: F401  (YADE's converters must exist before _core returns vectors)
-from . import (analytic, benchmarking, checkpoint, contact, export, hertz_reference, meshfiles,  # noqa: F401
-               model_choice, peers, progress, scene, scenes, shape_error, shapes, validation)
+from . import _deprecated
+from . import checkpoint, contact, export, meshfiles, progress, scene, shapes  # noqa: F401
 from ._core import HertzMaterial, Mesh, plane_contact
 from .contact import body_contact, partner_contact, sphere_contact, triangle_contacts
 from .scene import _restore_mesh  # noqa: F401  (Mesh.__reduce__ names it as roundedmesh._restore_mesh)
 from .scene import (add_body, add_sphere, assign_material, contacts, critical_timestep, engine,
                     keep_triangle_forces, rounded_bodies, set_material, sphere_bodies, statistics, triangle_forces,
                     unbalanced_force)
-from .model_choice import cheapest_model
 from .shapes import reference_shape
 
 Mesh.load = staticmethod(meshfiles.load)
@@ -37,3 +40,27 @@ __all__ = ["Mesh", "HertzMaterial", "add_body", "add_sphere", "assign_material",
            "critical_timestep", "statistics", "rounded_bodies", "sphere_bodies", "plane_contact", "partner_contact", "body_contact",
            "sphere_contact", "triangle_contacts", "contacts", "unbalanced_force", "keep_triangle_forces",
            "triangle_forces", "cheapest_model"]
+
+
+def cheapest_model(shape, error, pose_statistic="median", data=None):
+    """The cheapest roundedmesh configuration (mesh nodes, curvature, regime) of `shape` ('sphere', 'pear',
+    'gummy_bear') whose force error in the speed-against-error study is at most `error`, a fraction (0.05 for
+    5 %), for `pose_statistic` 'median' or 'worst', as a ModelChoice; ModelChoice.mesh() builds its mesh, its
+    regime goes to rm.engine(regime=...). Raises ValueError when no configuration of the study meets it.
+    roundedmesh.study.model_choice.cheapest_model, imported on first call, has the details."""
+    from .study.model_choice import cheapest_model as choose
+    return choose(shape, error, pose_statistic=pose_statistic, data=data)
+
+
+def __getattr__(name):
+    """rm.study, imported on first use; the modules that moved there under their old names (rm.validation, ...),
+    with a DeprecationWarning (PEP 562)."""
+    if name == "study":
+        return importlib.import_module(".study", __name__)
+    if name in _deprecated.MOVED:
+        return _deprecated.moved(name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | {"study"})

@@ -14,14 +14,16 @@ Coulomb).
 """
 import numpy as np
 
-from ._core import _body_contact, _partner_contact, _sphere_contact
+from ._core import ENGINE_OPTIONS, _body_contact, _partner_contact, _sphere_contact
 
 _ZERO = (0.0, 0.0, 0.0)
+# The engine's defaults (pkg/law, pkg/engine: _core.ENGINE_OPTIONS).
+_GAMMA, _REGIME, _FRICTION, _CURVATURE = (ENGINE_OPTIONS[k] for k in ("gamma", "regime", "friction", "curvature"))
 
 
 def body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
-                 vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto", friction="spring",
-                 curvature="mean"):
+                 vel2=_ZERO, ang_vel2=_ZERO, gamma=_GAMMA, regime=_REGIME, friction=_FRICTION,
+                 curvature=_CURVATURE):
     """(force on 1, torque on 1, force on 2, torque on 2) of two rounded bodies: Mesh mesh1 in its principal
     frame placed at pos1 turned by ori1, likewise mesh2; materials are HertzMaterials."""
     return _body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1, ang_vel1, vel2, ang_vel2,
@@ -29,16 +31,16 @@ def body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel
 
 
 def sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel=_ZERO, ang_vel=_ZERO,
-                   sphere_vel=_ZERO, sphere_ang_vel=_ZERO, gamma=10.0, regime="auto", friction="spring",
-                   curvature="mean"):
+                   sphere_vel=_ZERO, sphere_ang_vel=_ZERO, gamma=_GAMMA, regime=_REGIME, friction=_FRICTION,
+                   curvature=_CURVATURE):
     """(force on the body, torque on it, force on the sphere, torque on it) of a rounded body against an
     analytic sphere of `radius` [m] centred at `centre` (what a YADE Sphere partner is)."""
     return _sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel, ang_vel, sphere_vel,
                            sphere_ang_vel, gamma, regime, False, friction, curvature)[:4]
 
 
-def partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel=_ZERO, ang_vel=_ZERO, gamma=10.0,
-                    regime="auto", friction="spring", curvature="mean", details=False):
+def partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel=_ZERO, ang_vel=_ZERO, gamma=_GAMMA,
+                    regime=_REGIME, friction=_FRICTION, curvature=_CURVATURE, details=False):
     """(force on the body, torque on it, force on the partner, torque on it about its position) of a rounded body
     (Mesh `mesh` placed at pos, turned by ori) against `partner`, a YADE Body with a Wall, Box, Facet or Sphere shape
     at its own pose and velocity (it need not be in O.bodies), made of `partner_material`. What the engine computes
@@ -50,8 +52,8 @@ def partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, ve
 
 
 def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
-                      vel2=_ZERO, ang_vel2=_ZERO, gamma=10.0, regime="auto", friction="spring",
-                      curvature="mean"):
+                      vel2=_ZERO, ang_vel2=_ZERO, gamma=_GAMMA, regime=_REGIME, friction=_FRICTION,
+                      curvature=_CURVATURE):
     """The triangle pairs in contact in body_contact's configuration, as a dict of numpy arrays with one row
     per pair. `mesh2` may instead be a number: the radius of an analytic sphere centred at pos2 (ori2 is then
     ignored). Columns:

@@ -9,7 +9,8 @@
 #include <random>
 #include <set>
 
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/BroadPhase.hpp"
+#include "pkg/engine/ContactStep.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 
@@ -40,7 +41,7 @@ ContactData run(const ContactModel& model, const std::vector<BodyState>& bodies,
   data.resize(model);
   data.bodyStates = bodies;
   for (size_t p = 0; p < partners.size(); ++p) data.partnerStates[p] = partners[p];
-  RoundedMeshEngine(model, data);
+  contactForces(model, data);
   return data;
 }
 

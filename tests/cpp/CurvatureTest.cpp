@@ -9,7 +9,7 @@
 
 #include "pkg/shape/Curvature.hpp"
 #include "pkg/shape/Icosphere.hpp"
-#include "pkg/shape/Spheroid.hpp"
+#include "pkg/meshing/Spheroid.hpp"
 #include "tests/cpp/TestSupport.hpp"
 
 namespace roundedmesh {

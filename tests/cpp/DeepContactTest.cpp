@@ -9,7 +9,8 @@
 #include <set>
 
 #include "bench/RecordedScene.hpp"
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/PairGeometry.hpp"
+#include "pkg/engine/ContactStep.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_RoundedMesh_PressureGeom.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
@@ -117,7 +118,7 @@ TEST(DeepContact, GummyBearsKeepEveryContact) {
 // random orientations: at every depth the pair resolved on its own finds what brute force finds. A list grown by
 // half the deepest contact per pass missed pairs that the criterion accepts much deeper than the others at once (a
 // segment through both bodies at a slant: 22 mm where the rest reached 12 mm), in 11 of 40 orientations; a pair
-// past the Hertz range now holds every pair it can have (RoundedMeshEngine.cpp, deepestPossible).
+// past the Hertz range now holds every pair it can have (CandidateLists.hpp, deepestPossible).
 TEST(DeepContact, GummyBearsPressedToHalfARadiusLoseNoPair) {
   const RecordedScene scene = loadRecordedScene();
   ContactModel model;

@@ -8,7 +8,7 @@
 #include "pkg/geom/EllipticalContact.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Plane_PressureGeom.hpp"
 #include "pkg/geom/TriangleSphereGeom.hpp"
-#include "pkg/law/EllipticalHertz.hpp"
+#include "pkg/geom/EllipticalHertz.hpp"
 #include "pkg/law/Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "tests/cpp/TestSupport.hpp"

@@ -8,12 +8,12 @@
 #include <functional>
 #include <utility>
 
-#include "pkg/shape/BlendedShape.hpp"
+#include "pkg/meshing/BlendedShape.hpp"
 #include "pkg/shape/Cylinder.hpp"
 #include "pkg/shape/Distortion.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "pkg/shape/MassProperties.hpp"
-#include "pkg/shape/Spheroid.hpp"
+#include "pkg/meshing/Spheroid.hpp"
 #include "pkg/shape/SurfaceRepair.hpp"
 
 namespace roundedmesh {

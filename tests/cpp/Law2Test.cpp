@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/ContactStep.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Plane_PressureGeom.hpp"
 #include "pkg/math/CirclePolygonArea.hpp"
 #include "tests/cpp/TestSupport.hpp"

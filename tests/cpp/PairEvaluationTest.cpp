@@ -27,7 +27,7 @@ TEST(PairEvaluation, PlaneContactIsTheEnginesStep) {
   ContactData data;
   data.resize(model);
   data.bodyStates[0] = state;
-  RoundedMeshEngine(model, data);
+  contactForces(model, data);
   EXPECT_GT(once.onFirst.force.z(), 0.1);
   EXPECT_EQ(once.onFirst.force, data.bodyWrenches[0].force);
   EXPECT_EQ(once.onFirst.torque, data.bodyWrenches[0].torque);

@@ -10,7 +10,7 @@
 #include "pkg/shape/Cylinder.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "pkg/shape/PrincipalCurvature.hpp"
-#include "pkg/shape/Spheroid.hpp"
+#include "pkg/meshing/Spheroid.hpp"
 #include "tests/cpp/TestSupport.hpp"
 
 namespace roundedmesh {

@@ -9,7 +9,9 @@
 #include <set>
 
 #include "bench/RecordedScene.hpp"
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/PairGeometry.hpp"
+#include "pkg/engine/PairLoad.hpp"
+#include "pkg/engine/ContactStep.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_RoundedMesh_PressureGeom.hpp"
 
 namespace roundedmesh {
@@ -54,7 +56,7 @@ TEST(RecordedScene, EngineFindsWhatBruteForceFinds) {
   int compared = 0, touching = 0;
   for (int step = 0; step < 60; ++step) {
     scene().setStates(data, scene().shaking, step);
-    RoundedMeshEngine(model, data);
+    contactForces(model, data);
     if (step % 20 != 0 && step != 59) continue;
     int inContact = 0, apart = 0;
     for (size_t k = 0; k < data.pairs.size() && (inContact < 12 || apart < 4); k += 7) {
@@ -86,7 +88,7 @@ TEST(RecordedScene, SameResultOnAnyNumberOfThreads) {
     omp_set_num_threads(n);
     for (int step = 0; step < 10; ++step) {
       scene().setStates(runs[n - 1], scene().shaking, step);
-      RoundedMeshEngine(scene().model, runs[n - 1]);
+      contactForces(scene().model, runs[n - 1]);
     }
   }
   omp_set_num_threads(threads);

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "pkg/engine/CriticalTimeStep.hpp"
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/ContactStep.hpp"
 #include "tests/cpp/TestSupport.hpp"
 
 namespace roundedmesh {
@@ -39,7 +39,7 @@ struct Scene {
   void step() {
     data.resize(model);
     data.partnerStates = states;
-    RoundedMeshEngine(model, data);
+    contactForces(model, data);
   }
   const Wrench& wrench(int p) const { return data.partnerWrenches[p]; }
 
@@ -133,7 +133,7 @@ TEST(SpherePair, OnlySphereBodiesAndNotWithinAClump) {
   scene.step();
   EXPECT_EQ(scene.data.statistics.sphereContacts, 1);
   scene.data.partnerClumps = {7, 7};
-  RoundedMeshEngine(scene.model, scene.data);
+  contactForces(scene.model, scene.data);
   EXPECT_EQ(scene.data.statistics.bodyPairs, 0);
   EXPECT_TRUE(scene.wrench(0).force.isZero(0));
 }

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "pkg/engine/CriticalTimeStep.hpp"
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/ContactStep.hpp"
 #include "pkg/engine/StopRules.hpp"
 #include "pkg/phys/HertzPhys.hpp"
 #include "pkg/shape/BodyMesh.hpp"
@@ -34,17 +34,16 @@ struct Scene {
     model.partners.push_back({1, partner, kRubber});
     data.resize(model);
   }
-  // A step with the ball's centre at `centre`: the engine, then the stop rules; kept if nothing stops it.
+  // A contact step (ContactStep.hpp) with the ball's centre at `centre`: kept if nothing stops it.
   const std::vector<StopReason>& step(const Vector3r& centre) {
     data.bodyStates[0] = at(centre);
     data.partnerStates[0] = at(Vector3r::Zero());
-    RoundedMeshEngine(model, data);
-    checkStopRules(model, data);
-    if (data.stops.empty()) commitStep(data);
-    return data.stops;
+    report = contactStep(model, data);
+    return report.stops;
   }
   ContactModel model;
   ContactData data;
+  StepReport report;
 };
 
 const Facet kFacet{{Vector3r(-1, -1, 0), Vector3r(1, -1, 0), Vector3r(0, 1.5, 0)}};
@@ -67,7 +66,7 @@ TEST(StopRules, AFacetStopsOnlyACentreThroughItsTriangle) {
   Scene through(kFacet);
   EXPECT_TRUE(through.step(Vector3r(0, 0, 0.02)).empty());
   ASSERT_GE(through.step(Vector3r(0, 0, -0.005)).size(), 1u);
-  EXPECT_EQ(through.data.stops[0].cause, StopCause::CentreCrossed);
+  EXPECT_EQ(through.report.stops[0].cause, StopCause::CentreCrossed);
 
   Scene beside(kFacet);
   EXPECT_TRUE(beside.step(Vector3r(0.99, -0.99, 0.02)).empty());

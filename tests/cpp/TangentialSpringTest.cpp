@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "pkg/engine/CriticalTimeStep.hpp"
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/ContactStep.hpp"
 #include "pkg/law/TangentialSpring.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
@@ -167,7 +167,7 @@ TEST(TangentialSpringInEngine, StiffnessIsMindlinsForAMeshedSphere) {
   const Real shear = 1 / (kSoft.shearCompliance() + kHard.shearCompliance());
   const Real stiffness = 8 * shear * std::sqrt(radius * overlap);
   for (int n = 1; n <= 5; ++n) {
-    RoundedMeshEngine(model, data);
+    contactForces(model, data);
     const Vector3r friction = data.bodyWrenches[0].force - data.bodyWrenches[0].force.z() * Vector3r::UnitZ();
     EXPECT_NEAR(friction.x(), -stiffness * n * dt * 2e-3, 1e-9 * stiffness * n * dt * 2e-3) << n;
     EXPECT_NEAR(friction.y(), 0, 1e-12 * std::abs(friction.x()));
@@ -176,12 +176,12 @@ TEST(TangentialSpringInEngine, StiffnessIsMindlinsForAMeshedSphere) {
   EXPECT_TRUE(data.springs[0].active());
   // Lifted off: the spring lets go, and the next contact starts from zero.
   data.bodyStates[0].position.z() = radius + 1e-4;
-  RoundedMeshEngine(model, data);
+  contactForces(model, data);
   ASSERT_EQ(data.springs.size(), 1u);
   EXPECT_FALSE(data.springs[0].active());
   data.bodyStates[0].position.z() = radius - overlap;
   data.bodyStates[0].velocity.setZero();
-  RoundedMeshEngine(model, data);
+  contactForces(model, data);
   EXPECT_NEAR(data.bodyWrenches[0].force.x(), 0, 1e-12 * data.bodyWrenches[0].force.z());
 }
 
@@ -200,7 +200,7 @@ TEST(TangentialSpringInEngine, SphereBodyStiffnessIsMindlins) {
   data.partnerStates[1] = test::at(Vector3r::Zero());
   const Real stiffness = 8 * std::sqrt(radius * overlap) / (kSoft.shearCompliance() + kHard.shearCompliance());
   for (int n = 1; n <= 4; ++n) {
-    RoundedMeshEngine(model, data);
+    contactForces(model, data);
     const Wrench& onSphere = data.partnerWrenches[0];
     EXPECT_NEAR(onSphere.force.y(), -stiffness * n * dt * speed, 1e-10 * stiffness * n * dt * speed) << n;
     EXPECT_NEAR(onSphere.force.x(), 0, 1e-14);
@@ -232,7 +232,7 @@ TEST(TangentialSpringInEngine, SavedAndRestoredSpringsContinueBitForBit) {
     for (int n = first; n < last; ++n) {
       data.bodyStates = states(n);
       data.partnerStates[0] = test::at(Vector3r::Zero());
-      RoundedMeshEngine(model, data);
+      contactForces(model, data);
       out.insert(out.end(), data.bodyWrenches.begin(), data.bodyWrenches.end());
     }
   };
@@ -282,7 +282,7 @@ TEST(TangentialSpringInEngine, TriangleSharesSumToThePairsForce) {
                                 Quaternionr(Eigen::AngleAxis<Real>(0.7, Vector3r(1, 2, 3).normalized())));
   data.bodyStates[1].velocity = Vector3r(0, 0.01, 0.002);
   data.bodyStates[1].angularVelocity = Vector3r(3, 0, 0);
-  for (int n = 0; n < 5; ++n) RoundedMeshEngine(model, data);
+  for (int n = 0; n < 5; ++n) contactForces(model, data);
   ASSERT_EQ(data.pairs.size(), 1u);
   const std::vector<TriangleContact>& contacts = data.pairContacts[0];
   ASSERT_GT(contacts.size(), 3u);

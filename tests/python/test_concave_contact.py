@@ -1,9 +1,9 @@
 """Analytic spheres pressed into the gummy bear's concave grooves (neck, belly) against Hertz's elliptical solution
-with the smooth shape's principal curvatures: scripts/validate_concave_contact.py in its quick form (6 overlaps to
-0.1 r) on both of its meshes (563 and 2000 nodes), for both curvature models, 'mean' (the engine's default) and
-'principal', and both curvature sources of the mesh, 'computed' (estimated from the mesh, the paper's) and 'exact'
-(the smooth shape's, Mesh.reference_shape(..., curvature='exact')); the functions are the script's. Both materials
-E = 1 MPa, nu = 0.4. About 15 s.
+with the smooth shape's principal curvatures: scripts/validation/validate_concave_contact.py in its quick form (6
+overlaps to 0.1 r) on both of its meshes (563 and 2000 nodes), for both curvature models, 'mean' (the engine's
+default) and 'principal', and both curvature sources of the mesh, 'computed' (estimated from the mesh, the paper's)
+and 'exact' (the smooth shape's, Mesh.reference_shape(..., curvature='exact')); the functions are the script's. Both
+materials E = 1 MPa, nu = 0.4. About 15 s.
 
 The target: |F_model / F_hertz - 1| <= 10 % at delta = 0.1 r wherever Hertz holds (1/r + k1 > 0: the belly groove
 for r = 2 and 10 mm). curvature='principal' meets it with the exact curvatures on 2000 nodes and at 10 mm on 563
@@ -20,8 +20,8 @@ import numpy as np
 import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-_spec = importlib.util.spec_from_file_location("validate_concave_contact",
-                                               os.path.join(ROOT, "scripts", "validate_concave_contact.py"))
+_spec = importlib.util.spec_from_file_location(
+    "validate_concave_contact", os.path.join(ROOT, "scripts", "validation", "validate_concave_contact.py"))
 concave = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(concave)
 

@@ -1,8 +1,8 @@
 """Two gummy bears (rm.Mesh.reference_shape("gummy_bear"), E = 1 MPa, nu = 0.4) pressed together in 40 random
-orientations (seed 1), as scripts/deep_monotonicity.py does (doc/validation.md, "Deep overlaps"). The overlap is the
-approach of the centres along their line from first touch (the largest centre distance with a triangle pair in
-contact), in steps of 0.01 r_eq; the force is the second body's, along the approach. "Monotone" means that it never
-falls below its largest value so far by more than 1e-9 of that value (round-off).
+orientations (seed 1), as scripts/validation/deep_monotonicity.py does (doc/validation.md, "Deep overlaps"). The
+overlap is the approach of the centres along their line from first touch (the largest centre distance with a triangle
+pair in contact), in steps of 0.01 r_eq; the force is the second body's, along the approach. "Monotone" means that it
+never falls below its largest value so far by more than 1e-9 of that value (round-off).
 
 Within the Hertz range (0.1 r_eq) it is monotone in every orientation. Issue 12 asks the same to 0.5 r_eq in any
 orientation: with lists that lose no triangle pair (DeepContactTest) it falls in 31 of 200 orientations (20 by
@@ -20,7 +20,7 @@ import pytest
 import roundedmesh as rm
 
 _spec = importlib.util.spec_from_file_location(
-    "deep_monotonicity", Path(__file__).resolve().parents[2] / "scripts" / "deep_monotonicity.py")
+    "deep_monotonicity", Path(__file__).resolve().parents[2] / "scripts" / "validation" / "deep_monotonicity.py")
 deep = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(deep)
 

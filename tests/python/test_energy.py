@@ -17,6 +17,7 @@ from yade import ForceResetter, NewtonIntegrator, O, PyRunner, utils
 from yade.minieigenHP import Quaternion
 
 import roundedmesh as rm
+from roundedmesh.study import analytic
 
 R = 0.025
 FRACTION = 0.01  # of rm.critical_timestep()
@@ -59,7 +60,7 @@ def model_error(ball_material, wall_material, deepest):
 
 def deepest_overlap(energy, ball_material, wall_material):
     """The Hertz overlap storing `energy`, from (2/5) F delta = (8/15) E* sqrt(R) delta^5/2 [m]."""
-    e_star = rm.analytic.effective_modulus(ball_material, wall_material)
+    e_star = analytic.effective_modulus(ball_material, wall_material)
     return (energy * 15 / (8 * e_star * np.sqrt(R))) ** 0.4
 
 

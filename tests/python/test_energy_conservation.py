@@ -1,6 +1,6 @@
 """Is the contact force conservative? Issue 12, group 1 (doc/validation.md, "Energy: closed loops and collisions").
 
-One cheap case of each of scripts/energy_conservation.py's measurements (the functions are the script's):
+One cheap case of each of scripts/validation/energy_conservation.py's measurements (the functions are the script's):
   - the work W the contact does on body 2 carried quasi-statically round a closed loop of poses at a fixed overlap
     past first touch, against the energy E stored by pressing it to the loop's start pose. A force with a
     potential does no work on a closed loop;
@@ -19,7 +19,7 @@ import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 _spec = importlib.util.spec_from_file_location("energy_conservation",
-                                               os.path.join(ROOT, "scripts", "energy_conservation.py"))
+                                               os.path.join(ROOT, "scripts", "validation", "energy_conservation.py"))
 energy = importlib.util.module_from_spec(_spec)
 sys.modules[_spec.name] = energy   # the collision's PyRunner finds its recorder here
 _spec.loader.exec_module(energy)

@@ -1,7 +1,8 @@
-"""scripts/example_drum.py, scene S7 of doc/scenes.md: the drum of Facets the script makes (24 panels, two end caps,
-4 lifters), the lattice it starts the placement from, the scene it builds for roundedmesh and for YADE's clumps, the
-drum turned by RotationEngine in the ParaView export, and a short run from the shipped placement (no pair deeper
-than START_OVERLAP at the start): nothing leaves the drum, every output is written and the frames hold the Facets."""
+"""scripts/examples/example_drum.py, scene S7 of doc/scenes.md: the drum of Facets the script makes (24 panels, two
+end caps, 4 lifters), the lattice it starts the placement from, the scene it builds for roundedmesh and for YADE's
+clumps, the drum turned by RotationEngine in the ParaView export, and a short run from the shipped placement (no pair
+deeper than START_OVERLAP at the start): nothing leaves the drum, every output is written and the frames hold the
+Facets."""
 import csv
 import importlib.util
 import json
@@ -19,7 +20,7 @@ import roundedmesh as rm
 from test_export import read_piece, rotation
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir)
-SCRIPT = os.path.join(ROOT, "scripts", "example_drum.py")
+SCRIPT = os.path.join(ROOT, "scripts", "examples", "example_drum.py")
 _spec = importlib.util.spec_from_file_location("example_drum", SCRIPT)
 drum = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(drum)  # no side effects: main() runs only as a script
@@ -89,8 +90,11 @@ def test_the_lattice_holds_the_bodies_apart_at_the_start_size():
 
 
 def material_record(kind, body_id):
+    """The material the scene's tags keep for the body, as values in the order of rm.HertzMaterial.fields."""
     record = json.loads(O.tags[f"roundedmesh.{kind}.{body_id}"])
-    return record["material"] if kind == "body" else record
+    record = record["material"] if kind == "body" else record
+    assert tuple(record) == rm.HertzMaterial.fields
+    return list(record.values())
 
 
 # S7's scene for roundedmesh: the Facets are partners of E = 5e6 Pa, nu = 0.4, mu = 0.5 turned by RotationEngine at
@@ -158,8 +162,8 @@ def rows(path):
 
 @pytest.fixture(scope="module")
 def placement(tmp_path_factory):
-    """S7's placement for seed 1, overlaps up to START_OVERLAP (scripts/drum_placements/ if it is there, else placed
-    now: minutes)."""
+    """S7's placement for seed 1, overlaps up to START_OVERLAP (scripts/examples/drum_placements/ if it is there, else
+    placed now: minutes)."""
     folder = tmp_path_factory.mktemp("drum")
     poses = drum.initial_poses(1, str(folder), start_overlap=drum.START_OVERLAP)
     drum.write_placement(drum.placement_path(str(folder), 1, drum.START_OVERLAP), 1, poses, drum.START_OVERLAP)

@@ -1,12 +1,13 @@
-"""scripts/example_mixed_scene.py, the mixed scene of doc/user-guide.md, runs as written, and the guide shows
-the script's scene line for line."""
+"""scripts/examples/example_mixed_scene.py, the mixed scene of doc/user-guide.md, runs as written, and the guide
+shows the script's scene line for line."""
 import os
 import re
 import subprocess
+import textwrap
 import xml.etree.ElementTree as ElementTree
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir)
-SCRIPT = os.path.join(ROOT, "scripts", "example_mixed_scene.py")
+SCRIPT = os.path.join(ROOT, "scripts", "examples", "example_mixed_scene.py")
 GUIDE = os.path.join(ROOT, "doc", "user-guide.md")
 
 
@@ -14,7 +15,8 @@ def test_the_guide_shows_the_scene_of_the_script():
     with open(SCRIPT) as f:
         script = f.read()
     scene = script.split("# --- the scene of doc/user-guide.md, \"A mixed scene\" ---\n")[1].split(
-        "# --- end of the scene ---")[0]
+        "    # --- end of the scene ---")[0]
+    scene = textwrap.dedent(scene)  # the script's main() holds it, one level in
     with open(GUIDE) as f:
         guide = f.read()
     section = guide.split("## A mixed scene")[1]

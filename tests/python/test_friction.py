@@ -14,7 +14,7 @@ from yade import ForceResetter, NewtonIntegrator, O, utils
 from yade.minieigenHP import Quaternion, Vector3
 
 import roundedmesh as rm
-from roundedmesh import scenes
+from roundedmesh.study import scenes
 
 G = 9.81
 
@@ -31,7 +31,7 @@ def settled_drift(shape, settle, window, law="spring", angle=5.0):
 # Resting on a 5 degree slope with mu = 0.5 and c = 100 N s/m (the case: the viscous law creeps at 0.19-0.31
 # mm/s there). The bound is 1 um over 10 s; over half a second once settled (the bear within 0.6 s, the pear,
 # which rocks onto its balance point, within 1 s), the same rate: 0.05 um. Measured over 10 s
-# (scripts/validate_slope.py, doc/validation.md): far below it for both.
+# (scripts/validation/validate_slope.py, doc/validation.md): far below it for both.
 @pytest.mark.parametrize("shape, settle", [("gummy_bear", 0.6), ("pear", 1.0)])
 def test_a_body_rests_on_a_slope_below_the_friction_angle(shape, settle):
     drift = settled_drift(shape, settle=settle, window=0.5)

@@ -153,6 +153,6 @@ def test_a_changed_material_is_saved_with_the_scene(tmp_path):
     expected = O.forces.f(ball)[2]
     O.save(str(tmp_path / "changed.yade"))
     O.load(str(tmp_path / "changed.yade"))
-    rm_scene._state = None
+    rm_scene._forget_process_state()
     O.step()
     assert O.forces.f(ball)[2] == expected

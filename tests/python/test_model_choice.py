@@ -1,6 +1,6 @@
-"""Model only what a scene needs (issue 14, doc/speed-vs-error.md): roundedmesh.model_choice.cheapest_model against
-an independent pass over its data file, its refusals, and scripts/speed_vs_error_report.py on a tiny pair of
-errors.csv and costs.csv (no YADE run)."""
+"""Model only what a scene needs (issue 14, doc/speed-vs-error.md): roundedmesh.study.model_choice.cheapest_model
+against an independent pass over its data file, its refusals, and scripts/studies/speed_vs_error_report.py on a tiny
+pair of errors.csv and costs.csv (no YADE run)."""
 import csv
 import json
 import os
@@ -9,10 +9,10 @@ import subprocess
 import pytest
 
 import roundedmesh as rm
-from roundedmesh import model_choice
+from roundedmesh.study import model_choice
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir)
-REPORT = os.path.join(ROOT, "scripts", "speed_vs_error_report.py")
+REPORT = os.path.join(ROOT, "scripts", "studies", "speed_vs_error_report.py")
 TARGETS = (0.005, 0.01, 0.02, 0.05, 0.2, 0.5)
 
 
@@ -145,7 +145,7 @@ def test_the_report_joins_errors_and_costs(tmp_path):
 def test_the_study_script_hands_its_folder_to_the_report(tmp_path):
     # the sphere has no level sets: no part runs, and --report reads the fixtures left in the folder
     write_fixtures(tmp_path)
-    script = os.path.join(ROOT, "scripts", "speed_vs_error.py")
+    script = os.path.join(ROOT, "scripts", "studies", "speed_vs_error.py")
     out = subprocess.run(["/usr/bin/python3", script, "--shapes", "sphere", "--families", "level_sets", "--report",
                           "--output", str(tmp_path)], capture_output=True, text=True, timeout=60, env=os.environ)
     assert out.returncode == 0, out.stdout + out.stderr

@@ -12,7 +12,7 @@ from yade.minieigenHP import Quaternion, Vector3
 import roundedmesh as rm
 from roundedmesh import scene as rm_scene
 from roundedmesh.export import write_vtp
-from roundedmesh.scenes import S3, build_bouncing_sphere
+from roundedmesh.study.scenes import S3, build_bouncing_sphere
 
 RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-3)
 STIFF = rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=1e-3)
@@ -66,9 +66,7 @@ def test_box_top_acts_like_a_wall_away_from_its_edges():
 
 def forget_module_memory():
     """What a new process would have: no cached engine state or meshes, only the scene's tags."""
-    rm_scene._state = None
-    rm_scene._meshes.clear()
-    rm_scene._keys.clear()
+    rm_scene._forget_process_state()
 
 
 def run_and_record(steps):

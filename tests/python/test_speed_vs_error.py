@@ -1,6 +1,6 @@
 """The error axis of the speed-against-error study (issue 14, doc/speed-vs-error.md): Hertz's reference at a smooth
-shape's contact point (roundedmesh.hertz_reference), the pressing of YADE's representations
-(roundedmesh.shape_error), and scripts/speed_vs_error.py --quick --costs --report end to end."""
+shape's contact point (roundedmesh.study.hertz_reference), the pressing of YADE's representations
+(roundedmesh.study.shape_error), and scripts/studies/speed_vs_error.py --quick --costs --report end to end."""
 import csv
 import math
 import os
@@ -9,13 +9,14 @@ import subprocess
 import numpy as np
 import pytest
 
-from roundedmesh import analytic, peers, shapes
-from roundedmesh import hertz_reference as hr
-from roundedmesh import shape_error as se
-from roundedmesh.validation import pair_poses
+from roundedmesh import shapes
+from roundedmesh.study import analytic, peers
+from roundedmesh.study import hertz_reference as hr
+from roundedmesh.study import shape_error as se
+from roundedmesh.study.validation import pair_poses
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir)
-SCRIPT = os.path.join(ROOT, "scripts", "speed_vs_error.py")
+SCRIPT = os.path.join(ROOT, "scripts", "studies", "speed_vs_error.py")
 MODULUS = 1.0e6
 OVERLAPS = np.linspace(0, 5e-4, 11)
 

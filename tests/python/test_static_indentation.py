@@ -5,8 +5,9 @@ import pytest
 from yade.minieigenHP import Quaternion
 
 import roundedmesh as rm
-from roundedmesh.analytic import hertz_force, nrmse
-from roundedmesh.scenes import RIGID, S2_MATERIAL as MATERIAL, S2_OVERLAPS as OVERLAPS, s2_poses, static_indentation
+from roundedmesh.study.analytic import hertz_force, nrmse
+from roundedmesh.study.scenes import (RIGID, S2_MATERIAL as MATERIAL, S2_OVERLAPS as OVERLAPS, s2_poses,
+                                     static_indentation)
 
 def nrmse_per_pose(subdivisions, **engine_options):
     mesh = rm.Mesh.icosphere(1.0, subdivisions)

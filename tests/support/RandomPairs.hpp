@@ -15,14 +15,14 @@
 #include <random>
 #include <vector>
 
-#include "pkg/engine/RoundedMeshEngine.hpp"
+#include "pkg/engine/ContactStep.hpp"
 #include "pkg/geom/TriangleSphereGeom.hpp"
 #include "pkg/law/CoulombFriction.hpp"
 #include "pkg/law/HertzPressure.hpp"
 #include "pkg/law/NodeForces.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
-#include "pkg/shape/Spheroid.hpp"
+#include "pkg/meshing/Spheroid.hpp"
 
 namespace roundedmesh::test {
 

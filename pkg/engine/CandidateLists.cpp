@@ -1,0 +1,62 @@
+#include "pkg/engine/CandidateLists.hpp"
+
+#include <algorithm>
+
+#include "pkg/bound/TrianglePairCandidates.hpp"
+
+namespace roundedmesh {
+namespace {
+
+// How far a point of body 2 may have moved relative to body 1 between two of its poses in body 1's frame:
+// the offset plus the turn times its bound radius (|R - R0| = 2 |vec(q0^-1 q)|).
+Real motionBound(const Quaternionr& fromRotation, const Vector3r& fromTranslation, const Quaternionr& rotation,
+                 const Vector3r& translation, Real boundRadius) {
+  return (translation - fromTranslation).norm() + 2 * (fromRotation.conjugate() * rotation).vec().norm() * boundRadius;
+}
+
+}  // namespace
+
+Real deepestPossible(const RoundedMesh& a, const RoundedMesh& b) {
+  auto reach = [](const RoundedMesh& m) {
+    return m.sphereBoundRadius() + m.maxCapHeight() + m.solidDistance().tolerance();
+  };
+  return 2 * std::min(reach(a), reach(b));
+}
+
+void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Quaternionr& rotation,
+                      const Matrix3r& matrix, const Vector3r& translation, const ListSkins& skins, Real radius,
+                      Real shallow, Real full, CandidateList& list, ContactStatistics& statistics) {
+  const Real bound = mesh2.sphereBoundRadius();
+  auto needed = [&](Real skin) { return list.deepest > shallow ? full : 1.5 * list.deepest + 2 * skin; };
+  Real skin = skins.candidatesMin * radius, depth = shallow;
+  if (list.built) {
+    ++list.age;
+    const Real motion = motionBound(list.rotation, list.translation, rotation, translation, bound);
+    if (motion <= list.skin && list.deepest <= list.depth - list.skin && list.depth <= 2 * needed(list.skin) &&
+        (list.deepest <= shallow || list.depth >= full))
+      return;
+    skin = std::clamp(skins.candidateSteps * motion / list.age, skin, skins.candidatesMax * radius);
+    depth = needed(skin);
+  }
+  const bool nearCovers = list.nearSkin > 0 && depth <= list.nearDepth &&
+                          motionBound(list.nearRotation, list.nearTranslation, rotation, translation, bound) + skin <=
+                              list.nearSkin;
+  if (!nearCovers) {
+    list.nearRotation = rotation;
+    list.nearTranslation = translation;
+    list.nearSkin = skins.nearFactor * skin;
+    list.nearDepth = depth + list.nearSkin;
+    nearTrianglePairs(mesh1, mesh2, matrix, translation, list.nearSkin, list.nearDepth, shallow, list.near);
+    ++statistics.nearRebuilds;
+  }
+  list.built = true;
+  list.skin = skin;
+  list.depth = depth;
+  list.age = 0;
+  list.rotation = rotation;
+  list.translation = translation;
+  touchableTrianglePairs(mesh1, mesh2, matrix, translation, skin, depth, list.near, list.pairs);
+  ++statistics.candidateRebuilds;
+}
+
+}  // namespace roundedmesh

@@ -1,0 +1,105 @@
+#include "pkg/engine/PairLoad.hpp"
+
+#include <algorithm>
+
+#include "pkg/engine/PairFriction.hpp"
+#include "pkg/engine/PairGeometry.hpp"
+#include "pkg/phys/HertzPhys.hpp"
+
+namespace roundedmesh {
+
+Wrench reaction(const Wrench& onBody, const Vector3r& bodyPosition, const Vector3r& otherPosition) {
+  return {-onBody.force, -onBody.torque + (otherPosition - bodyPosition).cross(onBody.force)};
+}
+
+// Frames: R_WB turns body 1's axes into the world's; ..._B is in body 1's frame (origin at its position), as the
+// geoms are; ..._W in the world's.
+PairResult pairLoad(const ContactModel& model, const ContactData& data, const BodyPair& pair,
+                    const std::vector<PressureGeom>& geoms, std::vector<TriangleContact>* contacts,
+                    TangentialSpring* spring) {
+  const int bodyCount = static_cast<int>(model.bodies.size());
+  const bool otherIsBody = pair.other < bodyCount;
+  const RoundedBody& body = model.bodies[pair.body];
+  const BodyState& s1 = data.bodyStates[pair.body];
+  const BodyState& s2 = otherIsBody ? data.bodyStates[pair.other] : data.partnerStates[pair.other - bodyCount];
+  const HertzMaterial& otherMaterial =
+      otherIsBody ? model.bodies[pair.other].material : model.partners[pair.other - bodyCount].material;
+  const Matrix3r R_WB = s1.orientation.toRotationMatrix();
+  const HertzPhys phys = Ip2_HertzMaterial_HertzMaterial_HertzPhys(body.material, otherMaterial);
+  const RoundedMesh& mesh = *body.mesh;
+  PairResult result;
+  PairSummary& summary = result.summary;
+  if (geoms.empty()) {
+    if (spring) releaseSpring(*spring, data.timeStep, summary);  // not touching: the spring lets go
+    result.onOther = reaction(result.onBody, s1.position, s2.position);
+    return result;
+  }
+  Wrench onBody_B;
+  // Sums of Fn times the point of application and along the normal, and of the unweighted ones for a pair
+  // whose normal forces are all zero; the pair's normal stiffness.
+  Vector3r moment_B = Vector3r::Zero(), normals_B = Vector3r::Zero(), points_B = Vector3r::Zero();
+  Real normalForce = 0, stiffness = 0;
+  thread_local std::vector<ContactShare> shares;
+  shares.clear();
+  const size_t listedFrom = contacts ? contacts->size() : 0;
+  for (const PressureGeom& geom : geoms) {
+    const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, model.pressure);
+    ++(load.regime == Regime::Direct ? result.statistics.directContacts : result.statistics.quadratureContacts);
+    const Triangle& corners = mesh.triangles()[geom.triangle];
+    const std::array<Vector3r, 3> x_B = {mesh.vertices()[corners[0]], mesh.vertices()[corners[1]],
+                                         mesh.vertices()[corners[2]]};
+    const std::array<Real, 3> forces = nodeForces(geom.nodes, load);
+    addNodeForcesToBody(x_B, forces, geom.normal, onBody_B);
+    const Vector3r point_B = planePoint(geom, geom.effectivePoint);
+    // Fn acts at c + (-Mn_y, Mn_x) / Fn (NodeForces.hpp), so Fn times that point needs no division.
+    const Vector3r weighted_B =
+        load.force * geom.centre - load.moment.y() * geom.tangent1 + load.moment.x() * geom.tangent2;
+    moment_B += weighted_B;
+    normalForce += load.force;
+    normals_B += load.force * geom.normal;
+    points_B += point_B;
+    // dF/d(delta) = (3/2) F / delta of a Hertz contact, for its elastic part.
+    if (geom.sphereOverlap > 0) stiffness += 1.5 * load.elasticForce / geom.sphereOverlap;
+    shares.push_back({load, load.force > 0 ? Vector3r(weighted_B / load.force) : point_B});
+    summary.add(geom, load);
+    if (contacts) {
+      TriangleContact& c = contacts->emplace_back();
+      c.geom = geom;
+      c.point = s1.position + R_WB * point_B;
+      c.normal = R_WB * geom.normal;
+      c.load = load;
+      c.friction = TangentialLoad();
+      c.nodeForces = forces;
+      if (geom.partnerTriangle >= 0) c.partnerNodeForces = nodeForces(geom.partnerNodes, load);
+    }
+  }
+  summary.triangleContacts = static_cast<int>(geoms.size());
+  const bool loaded = normalForce > 0;
+  const Vector3r centre_B = loaded ? Vector3r(moment_B / normalForce) : Vector3r(points_B / geoms.size());
+  if (!loaded)
+    for (const PressureGeom& geom : geoms) normals_B += geom.normal;
+  const Vector3r normal_B = normals_B.normalized();
+  summary.point = s1.position + R_WB * centre_B;
+  summary.normal = R_WB * normal_B;
+  for (const PressureGeom& geom : geoms)
+    summary.depth = std::max(summary.depth, geom.effectiveOverlap * geom.normal.dot(normal_B));
+  TriangleContact* listed = contacts ? contacts->data() + listedFrom : nullptr;
+  dropUnusedSpring(phys, model.friction, spring, data.timeStep, summary);
+  if (phys.friction > 0) {
+    if (model.friction == FrictionLaw::Viscous) {
+      viscousFriction(geoms, shares, phys, R_WB, onBody_B, result, listed);
+    } else {
+      TangentialSpring fresh;
+      springFriction(shares, normalForce, stiffness, centre_B, normal_B, relativeMotion(s1, s2, R_WB.transpose()),
+                     s1, s2, phys, spring ? data.timeStep : 0, R_WB, spring ? *spring : fresh, onBody_B, result,
+                     listed);
+    }
+  }
+  result.onBody.force = R_WB * onBody_B.force;
+  result.onBody.torque = R_WB * onBody_B.torque;
+  // For a mesh, Eq. 15 on its own triangle's corners gives the same wrench as reaction's (doc/physics.md).
+  result.onOther = reaction(result.onBody, s1.position, s2.position);
+  return result;
+}
+
+}  // namespace roundedmesh

@@ -1,0 +1,525 @@
+// The contact step as the Python package drives it (roundedmesh/scene.py, pkg/engine/ContactStep.hpp), and
+// plane_contact, partner_contact, sphere_contact and body_contact (pkg/engine/PairEvaluation.hpp): arguments
+// checked and converted here.
+#include <boost/python.hpp>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "pkg/engine/ContactStep.hpp"
+#include "pkg/engine/PairEvaluation.hpp"
+#include "pkg/io/SpringRecord.hpp"
+#include "pkg/shape/BodyMesh.hpp"
+#include "py/module/NumpyConversion.hpp"
+#include "py/module/YadeBridge.hpp"
+
+namespace roundedmesh::python {
+namespace {
+
+// The engine options' names and values as users write them (rm.engine); their defaults are the C++ structs' own
+// (PressureOptions, ContactModel), exported as _core.ENGINE_OPTIONS.
+template <class Enum>
+using Names = std::vector<std::pair<const char*, Enum>>;
+const Names<RegimeChoice> kRegimes = {
+    {"auto", RegimeChoice::Auto}, {"quadrature", RegimeChoice::Quadrature}, {"direct", RegimeChoice::Direct}};
+const Names<FrictionLaw> kFrictionLaws = {{"spring", FrictionLaw::Spring}, {"viscous", FrictionLaw::Viscous}};
+const Names<CurvatureModel> kCurvatures = {{"mean", CurvatureModel::Mean}, {"principal", CurvatureModel::Principal}};
+
+template <class Enum>
+Enum parse(const Names<Enum>& names, const std::string& given, const char* option) {
+  std::string known;  // 'a', 'b' or 'c'
+  for (size_t k = 0; k < names.size(); ++k) {
+    if (given == names[k].first) return names[k].second;
+    known += std::string(k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + "'" + names[k].first + "'";
+  }
+  throw std::invalid_argument(std::string(option) + " must be " + known + ", got '" + given + "'");
+}
+
+template <class Enum>
+const char* nameOf(const Names<Enum>& names, Enum value) {
+  for (const auto& [name, v] : names)
+    if (v == value) return name;
+  throw std::logic_error("an option value without a name");
+}
+
+PressureOptions pressureOptions(Real gamma, const std::string& regime, const std::string& curvature) {
+  if (!(std::isfinite(gamma) && gamma > 0))
+    throw std::invalid_argument("gamma must be positive and finite, got " + std::to_string(gamma));
+  PressureOptions options;
+  options.gamma = gamma;
+  options.regime = parse(kRegimes, regime, "regime");
+  options.curvature = parse(kCurvatures, curvature, "curvature");
+  return options;
+}
+
+FrictionLaw frictionLaw(const std::string& friction) { return parse(kFrictionLaws, friction, "friction"); }
+
+// {option: default} of rm.engine, in the order of set_options' arguments.
+bp::dict engineOptionDefaults() {
+  const PressureOptions pressure;
+  const ContactModel model;
+  bp::dict d;
+  d["gamma"] = pressure.gamma;
+  d["regime"] = nameOf(kRegimes, pressure.regime);
+  d["friction"] = nameOf(kFrictionLaws, model.friction);
+  d["stop_overlap"] = model.stopOverlap;
+  d["curvature"] = nameOf(kCurvatures, pressure.curvature);
+  return d;
+}
+
+// {option: (allowed values)} of the options that are a choice.
+bp::dict engineOptionChoices() {
+  auto names = [](const auto& table) {
+    bp::list l;
+    for (const auto& entry : table) l.append(entry.first);
+    return bp::tuple(l);
+  };
+  bp::dict d;
+  d["regime"] = names(kRegimes);
+  d["friction"] = names(kFrictionLaws);
+  d["curvature"] = names(kCurvatures);
+  return d;
+}
+
+bp::tuple asTuple(const StabilityLimit& limit, int bodyId, int otherId) {
+  return bp::make_tuple(limit.timeStep, bodyId, otherId, limit.tangential);
+}
+
+// The contacts of one YADE scene (roundedmesh/scene.py builds one per revision of the scene's tags): its model,
+// the data kept from step to step, and the step as YADE's PyRunner runs it.
+class SceneContacts {
+ public:
+  void addBody(int id, const BodyMesh& mesh, const HertzMaterial& material) {
+    model_.bodies.push_back(roundedBody(id, mesh, material));
+  }
+  void addPartner(const bp::object& body, const HertzMaterial& material) {
+    const int id = bp::extract<int>(body.attr("id"));
+    model_.partners.push_back({id, yadeShape(body, id), material});
+  }
+  // A sphere body (rm.add_sphere): a YADE Sphere whose contacts with every partner the engine computes too.
+  void addSphere(const bp::object& body, const HertzMaterial& material) {
+    const int id = bp::extract<int>(body.attr("id"));
+    model_.partners.push_back({id, sphereShape(body, id), material, true});
+  }
+  void setOptions(Real gamma, const std::string& regime, const std::string& friction, Real stopOverlap,
+                  const std::string& curvature) {
+    if (!(stopOverlap > 0))
+      throw std::invalid_argument("stop_overlap must be positive (math.inf: never), got " + std::to_string(stopOverlap));
+    model_.pressure = pressureOptions(gamma, regime, curvature);
+    model_.friction = frictionLaw(friction);
+    model_.stopOverlap = stopOverlap;
+    data_.checkedTimeStep = {};  // the limit depends on the friction law
+  }
+
+  // One contact step on the current YADE scene (pkg/engine/ContactStep.hpp): the states in, the scene's springs
+  // in if this engine did not write them, contactStep, and for a kept step the wrenches and springs out. Returns
+  // the report as a dict (roundedmesh/scene.py, step): {'missing': [ids]} if managed bodies have left the scene
+  // (nothing computed); else 'unstable' (None, or (limit [s], YADE id of the body, of the other, tangential)),
+  // 'stops' [(cause 'crossed' or 'overlap', id, other id, overlap [m], size [m], point [m])], 'stop_speed' [m/s],
+  // 'stop_time_step' [s], 'fastest' (id or -1, speed [m/s], fraction of its contact depth per step, that depth
+  // [m], impact time step [s] or 0), 'deep_starts' [(id, other id, overlap [m], size [m])], 'energy' (elastic
+  // [J], normal damping [W], friction [W]).
+  bp::dict step(const bp::object& omega) {
+    const auto start = std::chrono::steady_clock::now();
+    bp::dict report;
+    const std::vector<int> missing = readScene(omega, model_, data_);
+    if (!missing.empty()) {
+      bp::list ids;
+      for (int id : missing) ids.append(id);
+      report["missing"] = ids;
+      return report;
+    }
+    takeSprings(omega);
+    const auto read = std::chrono::steady_clock::now();
+    const StepReport r = contactStep(model_, data_);
+    const auto computed = std::chrono::steady_clock::now();
+    if (r.kept()) {
+      applyWrenches(omega, model_, data_);
+      keepSprings(omega);
+    }
+    readMs_ = std::chrono::duration<Real, std::milli>(read - start).count();
+    writeMs_ = std::chrono::duration<Real, std::milli>(std::chrono::steady_clock::now() - computed).count();
+    report["unstable"] = r.unstable ? asTuple(*r.unstable, yadeId(r.unstable->body), yadeId(r.unstable->other))
+                                    : bp::object();
+    bp::list stops;
+    for (const StopReason& s : r.stops)
+      stops.append(bp::make_tuple(s.cause == StopCause::CentreCrossed ? "crossed" : "overlap", yadeId(s.body),
+                                  yadeId(s.other), s.overlap, s.size, s.point));
+    report["stops"] = stops;
+    report["stop_speed"] = r.stopSpeed;
+    report["stop_time_step"] = r.stopTimeStep;
+    const FastBody& f = r.fastest;
+    report["fastest"] = bp::make_tuple(f.body < 0 ? -1 : yadeId(f.body), f.speed, f.fraction, f.depth,
+                                       r.fastTimeStep);
+    bp::list deep;
+    for (const DeepPair& d : r.deepStarts) deep.append(bp::make_tuple(yadeId(d.body), yadeId(d.other), d.overlap, d.size));
+    report["deep_starts"] = deep;
+    report["energy"] = bp::make_tuple(r.energy.elastic, r.energy.dampingPower, r.energy.frictionPower);
+    return report;
+  }
+
+  // (time step [s], YADE id of the body, YADE id of the other body, whether the limit is the tangential
+  // contact's) of the most restrictive pair, for the masses and principal moments of inertia the bodies have in
+  // YADE now (one that has left the scene puts no limit). With impactSpeed [m/s] > 0, also the step that resolves an impact at that speed (impactTimeStep).
+  bp::tuple stabilityLimit(const bp::object& omega, Real impactSpeed) {
+    readScene(omega, model_, data_);  // a body that has left the scene puts no limit
+    const StabilityLimit limit = roundedmesh::stabilityLimit(model_, data_.bodyMasses, data_.partnerMasses,
+                                                             data_.bodyInertias, data_.partnerInertias, impactSpeed);
+    if (limit.body < 0) return asTuple(limit, -1, -1);
+    return asTuple(limit, yadeId(limit.body), yadeId(limit.other));
+  }
+
+  // Every pair of the last step with at least one triangle contact, as arrays with one row per pair
+  // (roundedmesh.contacts()).
+  bp::dict contacts() const {
+    std::vector<long> id1, id2, count, sliding;
+    std::vector<Vector3r> force1, torque1, force2, torque2, point, normal;
+    std::vector<Real> overlap, depth;
+    for (size_t k = 0; k < data_.pairs.size(); ++k) {
+      const PairResult& r = data_.pairResults[k];
+      if (r.summary.triangleContacts == 0) continue;
+      id1.push_back(yadeId(data_.pairs[k].body));
+      id2.push_back(yadeId(data_.pairs[k].other));
+      force1.push_back(r.onBody.force);
+      torque1.push_back(r.onBody.torque);
+      force2.push_back(r.onOther.force);
+      torque2.push_back(r.onOther.torque);
+      point.push_back(r.summary.point);
+      normal.push_back(r.summary.normal);
+      overlap.push_back(r.summary.deepestOverlap);
+      depth.push_back(r.summary.depth);
+      count.push_back(r.summary.triangleContacts);
+      sliding.push_back(r.summary.sliding);
+    }
+    bp::dict d;
+    d["id1"] = toArray(id1);
+    d["id2"] = toArray(id2);
+    d["force1"] = toArray(force1);
+    d["torque1"] = toArray(torque1);
+    d["force2"] = toArray(force2);
+    d["torque2"] = toArray(torque2);
+    d["point"] = toArray(point);
+    d["normal"] = toArray(normal);
+    d["overlap"] = toArray(overlap);
+    d["depth"] = toArray(depth);
+    d["triangle_contacts"] = toArray(count);
+    d["sliding"] = toArray(sliding).astype(np::dtype::get_builtin<bool>());
+    return d;
+  }
+
+  // {YADE id: (n_triangles, 3) array} of the contact force [N] each triangle of a rounded body received in the
+  // last step, for the bodies that touched anything; empty unless keep_triangle_contacts was set before it.
+  bp::dict triangleForces() const {
+    std::map<int, std::vector<Vector3r>> forces;
+    auto add = [&](int index, int triangle, const Vector3r& force) {
+      std::vector<Vector3r>& f = forces[index];
+      if (f.empty()) f.assign(model_.bodies[index].mesh->triangles().size(), Vector3r::Zero());
+      f[triangle] += force;
+    };
+    const int bodyCount = static_cast<int>(model_.bodies.size());
+    for (size_t k = 0; k < data_.pairContacts.size(); ++k)
+      for (const TriangleContact& c : data_.pairContacts[k]) {
+        // c.load.force along n12 and c.friction.force act on the other side; the body receives the opposite.
+        const Vector3r onOther = c.load.force * c.normal + c.friction.force;
+        add(data_.pairs[k].body, c.geom.triangle, -onOther);
+        if (c.geom.partnerTriangle >= 0 && data_.pairs[k].other < bodyCount)
+          add(data_.pairs[k].other, c.geom.partnerTriangle, onOther);
+      }
+    bp::dict d;
+    for (const auto& [index, f] : forces) d[model_.bodies[index].id] = toArray(f);
+    return d;
+  }
+
+  bool keepTriangleContacts() const { return data_.keepTriangleContacts; }
+  void setKeepTriangleContacts(bool keep) { data_.keepTriangleContacts = keep; }
+
+  bp::dict statistics() const {
+    const ContactStatistics& c = data_.statistics;
+    bp::dict s;
+    s["body_pairs"] = c.bodyPairs;
+    s["touching_pairs"] = c.touchingPairs;
+    s["candidates"] = c.narrowPhase.candidates;
+    s["rejected_not_facing"] = c.narrowPhase.notFacing;
+    s["rejected_no_overlap"] = c.narrowPhase.noOverlap;
+    s["rejected_outside_circle"] = c.narrowPhase.outsideCircle;
+    s["rejected_empty_polygon"] = c.narrowPhase.emptyPolygon;
+    s["rejected_beyond_contact_circle"] = c.narrowPhase.beyondContactCircle;
+    s["rejected_through_body"] = c.narrowPhase.throughBody;
+    s["quadrature_contacts"] = c.quadratureContacts;
+    s["direct_contacts"] = c.directContacts;
+    s["sphere_contacts"] = c.sphereContacts;
+    s["sliding_contacts"] = c.slidingContacts;
+    s["neighbour_rebuilds"] = c.neighbourRebuilds;
+    s["candidate_rebuilds"] = c.candidateRebuilds;
+    s["near_rebuilds"] = c.nearRebuilds;
+    s["broad_phase_ms"] = 1e3 * data_.times.broadPhase;
+    s["pairs_ms"] = 1e3 * data_.times.pairs;
+    s["reduction_ms"] = 1e3 * data_.times.reduction;
+    s["read_ms"] = readMs_;
+    s["write_ms"] = writeMs_;
+    return s;
+  }
+
+ private:
+  // YADE's id of an engine index (bodies, then partners).
+  int yadeId(int index) const {
+    const int bodyCount = static_cast<int>(model_.bodies.size());
+    return index < bodyCount ? model_.bodies[index].id : model_.partners[index - bodyCount].id;
+  }
+
+  // Before a step: the scene's springs (O.tags[kSpringsTag], "token:record"), unless this engine wrote them
+  // itself (same token): a loaded scene, or one whose springs another engine state wrote. Pairs whose bodies the
+  // engine does not know (erased since) are dropped.
+  void takeSprings(const bp::object& omega) {
+    const std::string tagged = readTag(omega, kSpringsTag);
+    const size_t colon = tagged.find(':');
+    const std::string token = tagged.substr(0, colon);
+    if (token == springToken_) return;
+    std::vector<std::pair<BodyPair, TangentialSpring>> springs;
+    if (!token.empty()) {
+      std::vector<SpringEntry> entries;
+      try {
+        entries = decodeSprings(colon == std::string::npos ? std::string() : tagged.substr(colon + 1));
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("the scene's tangential springs (O.tags['") + kSpringsTag +
+                                    "']) are damaged: " + e.what());
+      }
+      std::map<int, int> index;
+      for (size_t b = 0; b < model_.bodies.size(); ++b) index[model_.bodies[b].id] = static_cast<int>(b);
+      for (size_t p = 0; p < model_.partners.size(); ++p)
+        index[model_.partners[p].id] = static_cast<int>(model_.bodies.size() + p);
+      for (const SpringEntry& e : entries) {
+        const auto first = index.find(e.id1), second = index.find(e.id2);
+        if (first != index.end() && second != index.end())
+          springs.push_back({{first->second, second->second}, e.spring});
+      }
+    }
+    data_.restoreSprings(std::move(springs));
+    springToken_ = token;
+  }
+
+  // After a kept step: the engine's springs into the scene, so that O.save keeps them: "token:record", a token
+  // unique to this write (the process's, and a count); "" when there are none and were none.
+  void keepSprings(const bp::object& omega) {
+    const auto active = data_.activeSprings();
+    if (active.empty() && springToken_.empty()) return;
+    std::vector<SpringEntry> entries;
+    entries.reserve(active.size());
+    for (const auto& [pair, spring] : active) entries.push_back({yadeId(pair.body), yadeId(pair.other), spring});
+    springToken_ = active.empty() ? std::string() : processToken() + "." + std::to_string(++springWrites_);
+    omega.attr("tags")[kSpringsTag] = active.empty() ? std::string() : springToken_ + ":" + encodeSprings(entries);
+  }
+
+  static const std::string& processToken() {
+    static const std::string token = [] {
+      std::random_device random;
+      std::ostringstream s;
+      s << std::hex << random() << random();
+      return s.str();
+    }();
+    return token;
+  }
+
+  static std::string readTag(const bp::object& omega, const char* key) {
+    const bp::object tags = omega.attr("tags");
+    if (!bp::extract<bool>(tags.attr("has_key")(key))()) return std::string();
+    return bp::extract<std::string>(tags[key]);
+  }
+
+  static constexpr const char* kSpringsTag = "roundedmesh.springs";
+  ContactModel model_;
+  ContactData data_;
+  std::string springToken_;  // the token of the springs the engine holds; "": none
+  static inline long springWrites_ = 0;
+  Real readMs_ = 0, writeMs_ = 0;  // the bridge's share of the last step: states in, wrenches out
+};
+
+void requireFinite(const Vector3r& v, const char* name) {
+  if (!v.allFinite()) throw std::invalid_argument(std::string(name) + " must be finite");
+}
+
+Quaternionr rotation(const Quaternionr& q, const char* name) {
+  if (!q.coeffs().allFinite() || q.norm() == 0) throw std::invalid_argument(std::string(name) + " must be a finite rotation");
+  return q.normalized();
+}
+
+BodyState bodyState(const Vector3r& pos, const Quaternionr& ori, const Vector3r& vel, const Vector3r& angVel,
+                    int index) {
+  const std::string suffix = index ? std::to_string(index) : "";
+  requireFinite(pos, ("pos" + suffix).c_str());
+  requireFinite(vel, ("vel" + suffix).c_str());
+  requireFinite(angVel, ("ang_vel" + suffix).c_str());
+  return {pos, rotation(ori, ("ori" + suffix).c_str()), vel, angVel};
+}
+
+bp::dict describe(const TriangleContact& c) {
+  bp::dict d;
+  d["triangle1"] = c.geom.triangle;
+  d["triangle2"] = c.geom.partnerTriangle;
+  d["sphere_overlap"] = c.geom.sphereOverlap;
+  d["effective_overlap"] = c.geom.effectiveOverlap;
+  d["radius"] = c.geom.radius;
+  d["contact_radius"] = c.geom.contactRadius;
+  d["point"] = c.point;
+  d["normal"] = c.normal;
+  d["regime"] = c.load.regime == Regime::Direct ? "direct" : "quadrature";
+  d["normal_force"] = c.load.force;
+  d["tangential_force"] = c.friction.force;
+  d["sliding"] = c.friction.sliding;
+  d["node_forces1"] = bp::make_tuple(c.nodeForces[0], c.nodeForces[1], c.nodeForces[2]);
+  if (c.geom.partnerTriangle >= 0)
+    d["node_forces2"] = bp::make_tuple(c.partnerNodeForces[0], c.partnerNodeForces[1], c.partnerNodeForces[2]);
+  return d;
+}
+
+bp::list describeAll(const std::vector<TriangleContact>& contacts) {
+  bp::list listed;
+  for (const TriangleContact& c : contacts) listed.append(describe(c));
+  return listed;
+}
+
+bp::tuple asTuple(const PairEvaluation& e) {
+  return bp::make_tuple(e.onFirst.force, e.onFirst.torque, e.onSecond.force, e.onSecond.torque, describeAll(e.contacts));
+}
+
+bp::tuple planeContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& planePoint,
+                       const Vector3r& planeNormal, const HertzMaterial& meshMaterial,
+                       const HertzMaterial& planeMaterial, const Vector3r& vel, const Vector3r& angVel, Real gamma,
+                       const std::string& regime, const std::string& friction, const std::string& curvature) {
+  requireFinite(planePoint, "plane_point");
+  requireFinite(planeNormal, "plane_normal");
+  if (planeNormal.norm() == 0) throw std::invalid_argument("plane_normal must not be zero");
+  const PairEvaluation e = roundedmesh::planeContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
+                                                     Plane{planePoint, planeNormal.normalized()}, planeMaterial,
+                                                     pressureOptions(gamma, regime, curvature), false,
+                                                     frictionLaw(friction));
+  return bp::make_tuple(e.onFirst.force, e.onFirst.torque);
+}
+
+bp::tuple sphereContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& centre,
+                        Real radius, const HertzMaterial& meshMaterial, const HertzMaterial& sphereMaterial,
+                        const Vector3r& vel, const Vector3r& angVel, const Vector3r& sphereVel,
+                        const Vector3r& sphereAngVel, Real gamma, const std::string& regime, bool details,
+                        const std::string& friction, const std::string& curvature) {
+  requireFinite(centre, "centre");
+  if (!(std::isfinite(radius) && radius > 0))
+    throw std::invalid_argument("radius must be positive and finite, got " + std::to_string(radius));
+  return asTuple(roundedmesh::sphereContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
+                                            Sphere{radius},
+                                            bodyState(centre, Quaternionr::Identity(), sphereVel, sphereAngVel, 2),
+                                            sphereMaterial, pressureOptions(gamma, regime, curvature), details,
+                                            frictionLaw(friction)));
+}
+
+bp::tuple partnerContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const bp::object& partner,
+                         const HertzMaterial& meshMaterial, const HertzMaterial& partnerMaterial, const Vector3r& vel,
+                         const Vector3r& angVel, Real gamma, const std::string& regime, bool details,
+                         const std::string& friction, const std::string& curvature) {
+  const int id = bp::extract<int>(partner.attr("id"));
+  const PartnerShape shape = yadeShape(partner, id);
+  const bp::object s = partner.attr("state");
+  BodyState partnerState;
+  partnerState.position = bp::extract<Vector3r>(s.attr("pos"));
+  partnerState.orientation = bp::extract<Quaternionr>(s.attr("ori"));
+  partnerState.velocity = bp::extract<Vector3r>(s.attr("vel"));
+  partnerState.angularVelocity = bp::extract<Vector3r>(s.attr("angVel"));
+  if (!(partnerState.position.allFinite() && partnerState.orientation.coeffs().allFinite() &&
+        partnerState.orientation.norm() > 0 && partnerState.velocity.allFinite() &&
+        partnerState.angularVelocity.allFinite()))
+    throw std::invalid_argument("partner (body " + std::to_string(id) +
+                                "): its state (pos, ori, vel, angVel) must be finite, with a nonzero ori");
+  partnerState.orientation.normalize();
+  return asTuple(roundedmesh::partnerContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
+                                             shape, partnerState, partnerMaterial,
+                                             pressureOptions(gamma, regime, curvature), details, frictionLaw(friction)));
+}
+
+bp::tuple bodyContact(const BodyMesh& mesh1, const Vector3r& pos1, const Quaternionr& ori1, const BodyMesh& mesh2,
+                      const Vector3r& pos2, const Quaternionr& ori2, const HertzMaterial& material1,
+                      const HertzMaterial& material2, const Vector3r& vel1, const Vector3r& angVel1,
+                      const Vector3r& vel2, const Vector3r& angVel2, Real gamma, const std::string& regime,
+                      bool details, const std::string& friction, const std::string& curvature) {
+  return asTuple(roundedmesh::bodyContact(roundedBody(0, mesh1, material1), bodyState(pos1, ori1, vel1, angVel1, 1),
+                                          roundedBody(1, mesh2, material2), bodyState(pos2, ori2, vel2, angVel2, 2),
+                                          pressureOptions(gamma, regime, curvature), details, frictionLaw(friction)));
+}
+
+const char* partnerKindName(const Plane&) { return "Plane"; }
+const char* partnerKindName(const Wall&) { return "Wall"; }
+const char* partnerKindName(const Box&) { return "Box"; }
+const char* partnerKindName(const Facet&) { return "Facet"; }
+const char* partnerKindName(const Sphere&) { return "Sphere"; }
+
+}  // namespace
+
+void exposeContactStep() {
+  bp::class_<SceneContacts, boost::noncopyable>(
+      "SceneContacts", "The contacts of one scene and its step (used by roundedmesh.scene).")
+      .def("add_body", &SceneContacts::addBody, (bp::arg("id"), bp::arg("mesh"), bp::arg("material")))
+      .def("add_partner", &SceneContacts::addPartner, (bp::arg("body"), bp::arg("material")))
+      .def("add_sphere", &SceneContacts::addSphere, (bp::arg("body"), bp::arg("material")))
+      .def("set_options", &SceneContacts::setOptions,
+           (bp::arg("gamma"), bp::arg("regime"), bp::arg("friction"), bp::arg("stop_overlap"), bp::arg("curvature")))
+      .def("step", &SceneContacts::step, bp::arg("O"))
+      .def("stability_limit", &SceneContacts::stabilityLimit, (bp::arg("O"), bp::arg("impact_speed") = 0.0))
+      .add_property("statistics", &SceneContacts::statistics)
+      .def("contacts", &SceneContacts::contacts)
+      .def("triangle_forces", &SceneContacts::triangleForces)
+      .add_property("keep_triangle_contacts", &SceneContacts::keepTriangleContacts,
+                    &SceneContacts::setKeepTriangleContacts);
+
+  // The engine's constants and options, declared once in C++ (pkg/engine/ContactModel.hpp, ContactStep.hpp).
+  bp::scope().attr("STOP_OVERLAP") = kStopOverlap;
+  bp::scope().attr("DEEPEST_OVERLAP") = kDeepestOverlap;
+  bp::scope().attr("FAST_STEP") = kFastStep;
+  bp::scope().attr("ENGINE_OPTIONS") = engineOptionDefaults();
+  bp::scope().attr("ENGINE_CHOICES") = engineOptionChoices();
+  const PressureOptions pressure;
+  const char* regime = nameOf(kRegimes, pressure.regime);
+  const char* friction = nameOf(kFrictionLaws, ContactModel().friction);
+  const char* curvature = nameOf(kCurvatures, pressure.curvature);
+  bp::def("partner_kind", +[](const bp::object& body) {
+            const int id = bp::extract<int>(body.attr("id"));
+            return std::visit([](const auto& shape) { return partnerKindName(shape); }, yadeShape(body, id));
+          }, bp::arg("body"),
+          "'Wall', 'Box', 'Facet' or 'Sphere' for a body that can be a contact partner; ValueError otherwise.");
+
+  bp::def("plane_contact", &planeContact,
+          (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("plane_point"), bp::arg("plane_normal"),
+           bp::arg("mesh_material"), bp::arg("plane_material"), bp::arg("vel") = Vector3r(Vector3r::Zero()),
+           bp::arg("ang_vel") = Vector3r(Vector3r::Zero()), bp::arg("gamma") = pressure.gamma, bp::arg("regime") = regime,
+           bp::arg("friction") = friction, bp::arg("curvature") = curvature),
+          "(force, torque) on a rounded body at pos, ori, moving with vel, ang_vel, pressed against the fixed\n"
+          "plane through plane_point with plane_normal pointing toward the body side. Torque is about pos.\n"
+          "gamma and regime ('auto', 'quadrature', 'direct') select the pressure integration (Eq. 14); friction\n"
+          "('spring', 'viscous') the tangential law and curvature ('mean', 'principal') the contact's curvature, as\n"
+          "for rm.engine: the spring of a contact evaluated once has no history, so only its damping acts.");
+
+  const Vector3r zero = Vector3r::Zero();
+  bp::def("_sphere_contact", &sphereContact,
+          (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("centre"), bp::arg("radius"),
+           bp::arg("mesh_material"), bp::arg("sphere_material"), bp::arg("vel") = zero, bp::arg("ang_vel") = zero,
+           bp::arg("sphere_vel") = zero, bp::arg("sphere_ang_vel") = zero, bp::arg("gamma") = pressure.gamma,
+           bp::arg("regime") = regime, bp::arg("details") = false, bp::arg("friction") = friction,
+           bp::arg("curvature") = curvature),
+          "(F1, T1, F2, T2, contacts): see roundedmesh.sphere_contact.");
+  bp::def("_partner_contact", &partnerContact,
+          (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("partner"), bp::arg("mesh_material"),
+           bp::arg("partner_material"), bp::arg("vel") = zero, bp::arg("ang_vel") = zero, bp::arg("gamma") = pressure.gamma,
+           bp::arg("regime") = regime, bp::arg("details") = false, bp::arg("friction") = friction,
+           bp::arg("curvature") = curvature),
+          "(F1, T1, F2, T2, contacts): see roundedmesh.partner_contact.");
+  bp::def("_body_contact", &bodyContact,
+          (bp::arg("mesh1"), bp::arg("pos1"), bp::arg("ori1"), bp::arg("mesh2"), bp::arg("pos2"), bp::arg("ori2"),
+           bp::arg("material1"), bp::arg("material2"), bp::arg("vel1") = zero, bp::arg("ang_vel1") = zero,
+           bp::arg("vel2") = zero, bp::arg("ang_vel2") = zero, bp::arg("gamma") = pressure.gamma, bp::arg("regime") = regime,
+           bp::arg("details") = false, bp::arg("friction") = friction, bp::arg("curvature") = curvature),
+          "(F1, T1, F2, T2, contacts): see roundedmesh.body_contact.");
+}
+
+}  // namespace roundedmesh::python

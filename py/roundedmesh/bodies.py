@@ -1,0 +1,241 @@
+"""Rounded bodies and sphere bodies in a YADE scene, and the materials of their contact partners.
+
+A rounded body is an ordinary YADE Body with a bare Shape and no bound, which YADE's colliders and
+dispatchers skip: YADE owns its mass, inertia, position, orientation and velocities and moves it with
+NewtonIntegrator (also as a member of a clump); roundedmesh owns its mesh and material (in the scene's tags,
+_records.py). YADE Walls, Boxes, Facets and Spheres become contact partners when given a HertzMaterial with
+assign_material. A sphere body (add_sphere) is a YADE Sphere that YADE's collider never pairs (groupMask 0):
+every contact it has, also with the other partners, is roundedmesh's.
+"""
+import json
+import math
+import numbers
+
+from yade import Body, Material, O, Shape
+from yade import Sphere as YadeSphere
+from yade.minieigenHP import Quaternion, Vector3
+
+from ._core import HertzMaterial, Mesh, partner_kind
+from ._records import _load_mesh, _material, _material_record, _new_revision, _set_tag, _store_mesh, _tag, _tags_named
+
+
+# --- input checks: each names the argument and runs before anything in the scene changes ---------------
+
+def _require_material(material, name):
+    if not isinstance(material, HertzMaterial):
+        raise TypeError(f"{name}: expected a roundedmesh.HertzMaterial, got {material!r}")
+    return material
+
+
+def _finite_vector(value, name):
+    try:
+        components = [] if isinstance(value, (str, bytes)) else [float(c) for c in value]
+    except (TypeError, ValueError):
+        components = []
+    if len(components) != 3:
+        raise TypeError(f"{name}: expected three numbers, got {value!r}")
+    if not all(math.isfinite(c) for c in components):
+        raise ValueError(f"{name}: must be finite, got {tuple(components)}")
+    return Vector3(*components)
+
+
+def _rotation(value, name):
+    if not isinstance(value, Quaternion):
+        raise TypeError(f"{name}: expected a Quaternion, got {value!r}")
+    if not all(math.isfinite(c) for c in value) or value.norm() == 0:
+        raise ValueError(f"{name}: must be a finite, non-zero quaternion, got {value!r}")
+    q = Quaternion(value)
+    q.normalize()
+    return q
+
+
+def _body_or_none(body_id):
+    try:
+        return O.bodies[body_id]
+    except IndexError:
+        return None
+
+
+def _existing_body(body_id, name):
+    if isinstance(body_id, bool) or not isinstance(body_id, numbers.Integral) or body_id < 0:
+        raise TypeError(f"{name}: expected a body id (a non-negative integer), got {body_id!r}")
+    body = _body_or_none(int(body_id))
+    if body is None:
+        raise ValueError(f"{name}: there is no body {body_id} in the scene")
+    return body
+
+
+def _materials(kind):
+    return {int(i): _material(json.loads(r)["material"] if kind == "body" else json.loads(r))
+            for i, r in _tags_named(kind).items()}
+
+
+_ALL_KINDS = ("body", "sphere", "partner")
+
+
+def _require_one_deformable(material, others, name, other_kind=None, exclude=None):
+    """Two rigid bodies (young = inf) have no Hertz contact: refuse a rigid material if a rigid one is
+    already among those it can touch (`others`: among 'body', 'sphere', 'partner'; body `exclude` is the one
+    whose material changes). `other_kind` names them in the message; without it, the kinds of the rigid ones
+    found (rounded and sphere bodies)."""
+    if math.isinf(material.young):
+        found = {kind: sorted(i for i, m in _materials(kind).items() if math.isinf(m.young) and i != exclude)
+                 for kind in others}
+        rigid = sorted(i for ids in found.values() for i in ids)
+        if other_kind is None:
+            other_kind = " or ".join(word for kind, word in (("body", "rounded"), ("sphere", "sphere"))
+                                     if found.get(kind)) + " bod(ies)"
+        if rigid:
+            raise ValueError(f"{name}: a rigid material (young=inf) cannot touch the rigid {other_kind} "
+                             f"{', '.join(map(str, rigid))}; give one side a finite modulus")
+
+
+_YADE_LABEL = "roundedmesh"  # the bridge (py/module/YadeBridge.cpp) checks it on every rounded body each step
+
+
+def _yade_material(material):
+    """The YADE Material of a rounded body: O.bodies.clump needs one, and its label tells the engine that the
+    body's material is still the HertzMaterial it knows."""
+    return Material(density=material.density, label=_YADE_LABEL)
+
+
+def _set_mass(body, mesh, material):
+    body.state.mass = material.density * mesh.volume
+    body.state.inertia = Vector3(*(material.density * mesh.inertia))
+
+
+def _set_sphere_mass(body, material):
+    radius = body.shape.radius
+    body.state.mass = material.density * 4 / 3 * math.pi * radius ** 3
+    body.state.inertia = Vector3(*[0.4 * body.state.mass * radius ** 2] * 3)
+
+
+def _positive_length(value, name):
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name}: expected a number, got {value!r}")
+    if not (math.isfinite(value) and value > 0):
+        raise ValueError(f"{name}: must be positive and finite, got {value!r}")
+    return float(value)
+
+
+# --- the public API ---------------------------------------------------------------------------------------
+
+def add_body(mesh, pos, ori=Quaternion.Identity, material=None):
+    """Adds a rounded body with `mesh` (in its principal frame) centred at `pos` [m], turned by `ori`, made of
+    `material` (a HertzMaterial), to the current scene. Returns the new body's id. Mass and principal inertia
+    come from the mesh and the material's density. On bad input nothing is added."""
+    if not isinstance(mesh, Mesh):
+        raise TypeError(f"mesh: expected a roundedmesh.Mesh, got {mesh!r}")
+    pos = _finite_vector(pos, "pos")
+    ori = _rotation(ori, "ori")
+    material = _require_material(material, "material")
+    _require_one_deformable(material, _ALL_KINDS, "material", "bod(ies)")
+
+    body = Body()
+    # O.bodies.clump needs a shape and a material on every member (it dereferences both, then uses the
+    # state's mass and inertia). The bare Shape has no class index, so a bound dispatcher that meets it aborts
+    # YADE ("No functor for type Shape"). bounded=False, saved with the body, makes BoundDispatcher (run by
+    # the colliders) skip the body before it looks for a functor: the body gets no bound, the collider never
+    # pairs it and YADE's InteractionLoop never sees it, whenever the collider was made. A groupMask of 0
+    # would not do (the bound is still dispatched), nor a stock shape with a bound functor (the collider would
+    # pair the body with its neighbours, and a stock Ig2 functor would add YADE's contact law to ours).
+    body.shape = Shape()
+    body.bounded = False
+    body.material = _yade_material(material)
+    body.aspherical = True
+    _set_mass(body, mesh, material)
+    body.state.pos = pos
+    body.state.ori = ori
+    key = _store_mesh(mesh)
+    body_id = O.bodies.append(body)
+    _set_tag(f"body.{body_id}", json.dumps({"mesh": key, "material": _material_record(material)}))
+    _new_revision()
+    return body_id
+
+
+def add_sphere(pos, radius, material, ori=Quaternion.Identity):
+    """Adds a sphere body: a YADE Sphere of `radius` [m] centred at `pos` [m], turned by `ori`, made of `material`
+    (a HertzMaterial), whose every contact the roundedmesh engine computes with the law of the rounded bodies
+    (the damped Hertz force of Eq. 7 and the Coulomb friction of Eqs. 19-21): with other sphere bodies, with
+    rounded bodies, and with the contact partners (Walls, Boxes, Facets, partner Spheres). Mass and inertia
+    come from the material's density. YADE's collider never pairs it (groupMask 0), so YADE's own contact laws
+    never add to it. Returns the new body's id. On bad input nothing is added."""
+    pos = _finite_vector(pos, "pos")
+    radius = _positive_length(radius, "radius")
+    material = _require_material(material, "material")
+    ori = _rotation(ori, "ori")
+    _require_one_deformable(material, _ALL_KINDS, "material", "bod(ies)")
+
+    body = Body()
+    body.shape = YadeSphere(radius=radius)
+    body.material = _yade_material(material)
+    body.groupMask = 0
+    _set_sphere_mass(body, material)
+    body.state.pos = pos
+    body.state.ori = ori
+    body_id = O.bodies.append(body)
+    _set_tag(f"sphere.{body_id}", json.dumps(_material_record(material)))
+    _new_revision()
+    return body_id
+
+
+def assign_material(body_id, material):
+    """Makes the YADE-native body `body_id` (a Wall, Box, Facet or Sphere) a contact partner of the rounded
+    bodies, made of `material`. Assigning again replaces the material, and a rounded or sphere body's
+    material is changed as by set_material. Partners touch rounded bodies only: contacts among them stay with YADE's own
+    engines, if the scene has any."""
+    material = _require_material(material, "material")
+    body = _existing_body(body_id, "body_id")
+    if _tag(f"body.{body.id}") or _tag(f"sphere.{body.id}"):
+        return set_material(body.id, material)
+    partner_kind(body)
+    _require_one_deformable(material, ("body", "sphere"), "material")
+    _set_tag(f"partner.{body.id}", json.dumps(_material_record(material)))
+    _new_revision()
+
+
+def set_material(body_id, material):
+    """Gives the rounded body, sphere body or contact partner `body_id` the HertzMaterial `material` from the
+    next step on, e.g. friction after settling without it. A rounded or sphere body's mass and inertia follow
+    the new density (refused for a clump member, whose mass is part of its clump's); a partner's mass stays
+    YADE's. On bad input nothing changes."""
+    material = _require_material(material, "material")
+    body = _existing_body(body_id, "body_id")
+    record, sphere = _tag(f"body.{body.id}"), _tag(f"sphere.{body.id}")
+    if record or sphere:
+        r = json.loads(record) if record else {"material": json.loads(sphere)}
+        density = _material(r["material"]).density
+        if material.density != density and body.isClumpMember:
+            raise ValueError(f"material: body {body.id} is a member of clump {body.clumpId}, whose mass and inertia "
+                             f"were fixed by O.bodies.clump; a new density ({material.density:g} instead of "
+                             f"{density:g} kg/m^3) must be given before clumping")
+        _require_one_deformable(material, _ALL_KINDS, "material", "bod(ies)", exclude=body.id)
+        body.material = _yade_material(material)
+        if record:
+            if material.density != density:
+                _set_mass(body, _load_mesh(r["mesh"]), material)
+            _set_tag(f"body.{body.id}", json.dumps({**r, "material": _material_record(material)}))
+        else:
+            _set_sphere_mass(body, material)
+            _set_tag(f"sphere.{body.id}", json.dumps(_material_record(material)))
+    elif _tag(f"partner.{body.id}"):
+        _require_one_deformable(material, ("body", "sphere"), "material")
+        _set_tag(f"partner.{body.id}", json.dumps(_material_record(material)))
+    else:
+        raise ValueError(f"body_id: body {body.id} is neither a rounded body nor a contact partner nor a "
+                         "sphere body; make a Wall, Box, Facet or Sphere a partner with assign_material")
+    _new_revision()
+
+
+
+def rounded_bodies():
+    """{body id: Mesh} of the current scene's rounded bodies."""
+    return {int(i): _load_mesh(json.loads(record)["mesh"]) for i, record in _tags_named("body").items()
+            if _body_or_none(int(i)) is not None}
+
+
+def sphere_bodies():
+    """{body id: radius [m]} of the current scene's sphere bodies (add_sphere)."""
+    return {int(i): _body_or_none(int(i)).shape.radius for i in _tags_named("sphere")
+            if _body_or_none(int(i)) is not None}
+

@@ -1,0 +1,140 @@
+"""Records scene S1 (doc/scenes.md) with 250 gummy bears for the C++ benchmark of the whole contact step
+(bench/s1_step.cpp) and the engine's tests, so that they run on a real packing without YADE:
+
+    bench/data/gummy_bear.mesh    the bears' mesh in its principal frame: vertices [m], triangles and the
+                                  radius of curvature each triangle uses in contact [m], as Mesh.reference_shape
+                                  ("gummy_bear", 554) makes it (563 nodes)
+    bench/data/s1_settled.csv     the settled packing: every bear's and wall's state (full double precision)
+    bench/data/s1_shaking.bin     the first `--steps` steps of S1's shaking started from the settled packing:
+                                  every bear's and the floor's state at every step (float32, see below)
+    bench/data/s1_resting.bin     the same number of steps of the settled packing in the standing box: the bears
+                                  still rattle and spin (up to 3 rad/s), as they do in YADE after settling
+
+The settled packing comes from scripts/benchmarks/bench_shaken_bears.py, which lets the bears fall from S1's
+lattice into the standing box and saves the settled scene; this script loads it, writes the packing, then moves the
+floor as S1 shakes the box, z = A sin(2 pi t / T) (A = 0.025 m, T = 0.25 s), and records the states at every step:
+
+    /usr/bin/python3 scripts/benchmarks/bench_shaken_bears.py --rebuild --settle-dt 5e-4 --settle-damping 0.3
+    /usr/bin/python3 scripts/benchmarks/record_s1_scene.py [--settled out/bench_shaken_bears/settled.yade.gz]
+                                                           [--steps 200]
+
+s1_shaking.bin and s1_resting.bin: the ASCII line "roundedmesh trajectory 1\n", then int32 body count n, int32 step count m,
+float64 dt, int32 ids[n], then m frames of n x 13 float32: position (3) [m], orientation quaternion
+(w, x, y, z), velocity (3) [m/s], angular velocity (3) [rad/s], bodies in the order of ids. float32 keeps
+positions to about 2e-8 m, far below the overlaps of the packing (1e-4 m): the benchmark evaluates contacts at
+the recorded states, it does not integrate them.
+"""
+import argparse
+import math
+import os
+import struct
+import sys
+
+import numpy as np
+from yade import O, PyRunner
+
+import roundedmesh as rm
+from roundedmesh.progress import Progress
+
+AMPLITUDE, PERIOD = 0.025, 0.25  # S1's shaking [m], [s]
+HEADER = b"roundedmesh trajectory 1\n"
+STATE_COLUMNS = ["x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz"]
+
+
+def state_row(state):
+    x, y, z, w = state.ori  # YADE's Quaternion iterates as x, y, z, w
+    return [*state.pos, w, x, y, z, *state.vel, *state.angVel]
+
+
+def write_mesh(mesh, path):
+    with open(path, "w") as f:
+        f.write("# roundedmesh mesh: Mesh.reference_shape('gummy_bear', 554) in its principal frame; units m\n")
+        f.write(f"vertices {len(mesh.vertices)}\n")
+        for v in mesh.vertices:
+            f.write(" ".join(f"{c:.17g}" for c in v) + "\n")
+        f.write(f"triangles {len(mesh.triangles)}\n")
+        for t in mesh.triangles:
+            f.write(" ".join(str(int(i)) for i in t) + "\n")
+        f.write(f"radii {len(mesh.radii)}\n")
+        for r in mesh.radii:
+            f.write(f"{r:.17g}\n")
+
+
+def walls():
+    """[(id, axis, sense)] of the scene's YADE Walls."""
+    return [(b.id, b.shape.axis, b.shape.sense) for b in O.bodies
+            if b is not None and type(b.shape).__name__ == "Wall"]
+
+
+def write_settled(bears, path):
+    with open(path, "w") as f:
+        f.write(f"# S1 settled packing of {len(bears)} gummy bears (doc/scenes.md), t = {O.time:.6g} s, "
+                f"dt = {O.dt:g} s; written by scripts/benchmarks/record_s1_scene.py\n")
+        f.write("# shape: gummy_bear (bench/data/gummy_bear.mesh) or wall<axis><sense> (a YADE Wall); "
+                "quaternion body -> global\n")
+        f.write(",".join(["id", "shape"] + STATE_COLUMNS) + "\n")
+        for i in bears:
+            f.write(",".join([str(i), "gummy_bear"] + [f"{c:.17g}" for c in state_row(O.bodies[i].state)]) + "\n")
+        for i, axis, sense in walls():
+            shape = f"wall{'xyz'[axis]}{'+' if sense > 0 else '-'}"
+            f.write(",".join([str(i), shape] + [f"{c:.17g}" for c in state_row(O.bodies[i].state)]) + "\n")
+
+
+def floor_id():
+    floors = [i for i, axis, sense in walls() if axis == 2 and sense > 0]
+    if len(floors) != 1:
+        raise SystemExit(f"expected one floor (a Wall with axis 2, sense 1), found {len(floors)}")
+    return floors[0]
+
+
+def record(bears, steps, path, amplitude):
+    """Records `steps` steps from the saved scene, the box shaken with `amplitude` [m] (0: standing)."""
+    floor = floor_id()
+    ids = list(bears) + [floor]
+    start = O.time
+    omega = 2 * math.pi / PERIOD
+
+    def drive():  # the box's velocity for the step about to be integrated
+        O.bodies[floor].state.vel = (0, 0, amplitude * omega * math.cos(omega * (O.time - start + 0.5 * O.dt)))
+
+    frames = np.empty((steps, len(ids), 13), dtype="<f4")
+    O.engines = O.engines[:-1] + [PyRunner(command="drive()", iterPeriod=1, initRun=True)] + O.engines[-1:]
+    sys.modules["__main__"].drive = drive  # PyRunner commands run in __main__'s namespace
+    reporter = Progress(steps, os.path.basename(path))
+    for k in range(steps):
+        O.run(1, True)
+        frames[k] = [state_row(O.bodies[i].state) for i in ids]
+        reporter.update(k + 1)
+    with open(path, "wb") as f:
+        f.write(HEADER)
+        f.write(struct.pack("<iid", len(ids), steps, O.dt))
+        f.write(np.asarray(ids, dtype="<i4").tobytes())
+        f.write(frames.tobytes())
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--settled", default="out/bench_shaken_bears/settled.yade.gz")
+    parser.add_argument("--output", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir,
+                                                         os.pardir, "bench", "data"))
+    parser.add_argument("--steps", type=int, default=200, help="steps of each trajectory to record")
+    args = parser.parse_args(argv)
+    if args.steps < 1:
+        parser.error("--steps must be positive")
+    if not os.path.exists(args.settled):
+        raise SystemExit(f"{args.settled} does not exist: run scripts/benchmarks/bench_shaken_bears.py first")
+    os.makedirs(args.output, exist_ok=True)
+    O.load(args.settled)
+    meshes = rm.rounded_bodies()
+    bears = sorted(meshes)
+    write_mesh(meshes[bears[0]], os.path.join(args.output, "gummy_bear.mesh"))
+    write_settled(bears, os.path.join(args.output, "s1_settled.csv"))
+    record(bears, args.steps, os.path.join(args.output, "s1_shaking.bin"), AMPLITUDE)
+    O.load(args.settled)
+    record(bears, args.steps, os.path.join(args.output, "s1_resting.bin"), 0.0)
+    print(f"wrote gummy_bear.mesh, s1_settled.csv, s1_shaking.bin and s1_resting.bin ({args.steps} steps each) to "
+          f"{args.output}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
