@@ -43,13 +43,17 @@ centre of its spheres' union, within 0.3 mm of the bear's). Outputs of a run, in
                   speed [m/s], bodies in the scene and bodies whose centre left the box, the contact counts of
                   the last step (roundedmesh: rm.statistics()'s body_pairs, touching_pairs, candidates, contacts =
                   triangle or sphere contacts; YADE peers: touching body pairs and real interactions, the rest
-                  empty), roundedmesh's stage times (pairs_ms, read_ms, write_ms [ms]), and the window's steps,
-                  wall time and CPU time per step [ms] (CPU of all the process's threads)
+                  empty), roundedmesh's stage times (pairs_ms, read_ms, write_ms [ms]), deepest_pair_r (the largest
+                  overlap of a pair for its size: roundedmesh's over every step of the window, as the stop rule
+                  measures it, over the smaller r_eq; the peers' deepest sphere or level-set penetration over r at
+                  the window's end), and the window's steps, wall time and CPU time per step [ms] (CPU of all the
+                  process's threads)
     packing.csv   at the end, Eq. 28: P(h) = N_h V_p / (A_b h) * 100 [%] for h = 0.01 ... 0.30 m, N_h the bodies
                   whose centre is less than h above the floor, V_p a body's volume [m^3], A_b = 0.16 m^2
     final_state.csv  every body's id, position [m] and orientation (w, x, y, z) at the end
-    timing.csv    threads, wall time of building and of running [s], CPU time [s], median wall and CPU ms per
-                  step and median contact counts over the windows of shaking and of settling, machine, command
+    timing.csv    threads, wall time of building and of running [s], CPU time [s], the largest deepest_pair_r of the
+                  run, median wall and CPU ms per step and median contact counts over the windows of shaking and
+                  of settling, machine, command
     height.png    mean and max height and the box's position vs time for this run
     vtk/          ParaView series <run>.pvd of --frames frames (roundedmesh.export.VtkSeries; YADE's spheres as
                   part 1 for the sphere and clump runs; none for level sets, which YADE 2023.02a's VTKRecorder
@@ -101,7 +105,8 @@ PACKING_HEIGHTS = np.round(np.arange(1, 31) * 0.01, 2)  # h of Eq. 28 [m]
 SUBMERGED_HEIGHT = 0.10               # h at which the summary quotes P(h): below every packing's top [m]
 FIELDS = ["step", "time_s", "phase", "box_z_m", "mean_height_m", "max_height_m", "mean_speed_m_s", "bodies",
           "outside", "body_pairs", "touching_pairs", "candidates", "contacts", "candidate_rebuilds",
-          "near_rebuilds", "pairs_ms", "read_ms", "write_ms", "window_steps", "ms_per_step", "cpu_ms_per_step"]
+          "near_rebuilds", "pairs_ms", "read_ms", "write_ms", "deepest_pair_r", "window_steps", "ms_per_step",
+          "cpu_ms_per_step"]
 CHECKPOINT = "checkpoint.yade.gz"
 SCENE_TAG = "s1_packing.scene"  # O.tags key of the scene's parameters, to refuse a checkpoint of another scene
 
@@ -347,6 +352,7 @@ class Recorder:
         self.excluded = np.zeros(2)  # wall and CPU seconds of the current window spent on frames and checkpoints
         self.last_step_end = None
         self.failure = None
+        self.deepest = 0.0  # the window's largest pair overlap for its size (roundedmesh: every step)
         self.reporter = Progress(args.steps - resumed_at, f"S1 {run}", interval=10.0)
         path = os.path.join(args.output, run, "height.csv")
         kept = [row for row in _csv_rows(path) if int(row[0]) <= resumed_at] if resumed_at else []
@@ -365,6 +371,8 @@ class Recorder:
         done = O.iter
         if done == self.resumed_at and done > 0:  # the checkpoint's own step: sampled before it was saved
             return
+        if self.run in SHAPES and done > 0:
+            self.deepest = max(self.deepest, rm.statistics()["deepest_pair_fraction"])
         if clock is None and done in self.window_ends:
             clock = clocks()
         if done == 1:  # the bodies have not moved yet: a contact now is an overlap in the start
@@ -392,7 +400,7 @@ class Recorder:
         if self.run in SHAPES:
             s = rm.statistics()
             return (s["body_pairs"], s["touching_pairs"], s["candidates"], s["quadrature_contacts"] +
-                    s["direct_contacts"] + s.get("sphere_contacts", 0), s["candidate_rebuilds"], s["near_rebuilds"],
+                    s["direct_contacts"] + s["exact_contacts"] + s.get("sphere_contacts", 0), s["candidate_rebuilds"], s["near_rebuilds"],
                     s["pairs_ms"], s["read_ms"], s["write_ms"])
         real = [i for i in O.interactions if i.isReal]
         owner = {}
@@ -409,7 +417,7 @@ class Recorder:
         present = sum(O.bodies[i] is not None for i in self.bodies)
         row = [done, O.time, "shaking" if done <= self.args.shaking_steps else "settling", self.box_z(),
                positions[:, 2].mean(), positions[:, 2].max(), speeds.mean(), present,
-               outside(positions, self.box_z()), *self.counts(), steps,
+               outside(positions, self.box_z()), *self.counts(), self.deepest_in_window(), steps,
                *(clock - self.window_start_clock - self.excluded) / steps * 1e3]
         self.rows.append(row)
         self.writer.writerow(row)
@@ -424,6 +432,19 @@ class Recorder:
         elif row[8] or row[7] != self.args.count:
             self.fail(f"at t = {row[1]:.4f} s, {row[8]} bodies have left the box and {row[7]} of "
                       f"{self.args.count} are in the scene")
+
+    def deepest_in_window(self):
+        """The largest overlap of a pair for its size: for roundedmesh, over the window's steps, as the stop rule
+        measures it (rm.statistics()['deepest_pair_fraction']: the pair's depth over the smaller r_eq); for YADE's
+        peers, at the window's end, the deepest penetration of two spheres or level sets of different bodies over
+        r (clump members: the deepest sphere pair, not the bodies' overlap)."""
+        if self.run in SHAPES:
+            deepest, self.deepest = self.deepest, 0.0
+            return deepest
+        depths = [i.geom.penetrationDepth for i in O.interactions if i.isReal and hasattr(i.geom, "penetrationDepth")
+                  and not (O.bodies[i.id1].isClumpMember and O.bodies[i.id2].isClumpMember and
+                           O.bodies[i.id1].clumpId == O.bodies[i.id2].clumpId)]
+        return max(depths, default=0.0) / RADIUS
 
     def fail(self, message):
         self.failure = message
@@ -568,6 +589,7 @@ def run_one(args, run):
             q = state.ori  # minieigen orders a quaternion's coefficients x, y, z, w
             writer.writerow([i, *state.pos, q[3], q[0], q[1], q[2]])
 
+    largest = max((r[FIELDS.index("deepest_pair_r")] for r in recorder.rows), default=0.0)
     timed = [r for r in recorder.rows if r[0] > resumed_at]
     phases = {phase: [r for r in timed if r[2] == phase] for phase in ("shaking", "settling")}
     columns = ["ms_per_step", "cpu_ms_per_step", "touching_pairs", "contacts"]
@@ -575,11 +597,11 @@ def run_one(args, run):
     with open(os.path.join(folder, "timing.csv"), "w", newline="") as f:
         writer = csv.writer(f)
         writer.writerow(["run", "threads", "omp_max_threads", "count", "dt_s", "steps", "resumed_at", "build_wall_s",
-                         "run_wall_s", "run_cpu_s", "total_wall_s"] +
+                         "run_wall_s", "run_cpu_s", "total_wall_s", "largest_pair_overlap_r"] +
                         [f"{phase}_{name}" for phase in phases for name in ["windows"] + ["median_" + c for c in columns]] +
                         ["machine", "command"])
         writer.writerow([run, args.threads, threads, args.count, args.dt, args.steps, resumed_at, build_seconds,
-                         run_seconds, run_cpu, total_seconds] +
+                         run_seconds, run_cpu, total_seconds, largest] +
                         [value for rows in phases.values() for value in [len(rows)] + medians(rows, columns)] +
                         [machine(), command])
 
@@ -589,7 +611,7 @@ def run_one(args, run):
           f"for {args.steps - resumed_at} steps (build {build_seconds:.1f} s, total {total_seconds:.1f} s); median "
           "ms/step, wall (CPU): shaking {:.2f} ({:.2f}), settling {:.2f} ({:.2f})".format(*shaking, *settling))
     print(f"final: mean height {heights.mean():.4f} m, max {heights.max():.4f} m above the floor; "
-          f"P({SUBMERGED_HEIGHT:.2f} m) = {at_submerged:.1f} %")
+          f"P({SUBMERGED_HEIGHT:.2f} m) = {at_submerged:.1f} %; largest pair overlap {largest:.3f} r")
     print(f"wrote height.csv, packing.csv, final_state.csv, timing.csv, height.png and vtk/{run}.pvd to {folder}")
     print(f"machine: {machine()}\ncommand: {command}")
 

@@ -10,6 +10,7 @@ ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& other)
   narrowPhase += other.narrowPhase;
   quadratureContacts += other.quadratureContacts;
   directContacts += other.directContacts;
+  exactContacts += other.exactContacts;
   sphereContacts += other.sphereContacts;
   slidingContacts += other.slidingContacts;
   neighbourRebuilds += other.neighbourRebuilds;

@@ -28,6 +28,7 @@ struct ContactStatistics {
   NarrowPhaseCounts narrowPhase;  // triangle pairs (or triangle-partner pairs) tested, and their rejections
   int quadratureContacts = 0;  // triangle contacts integrated by quadrature
   int directContacts = 0;      // triangle contacts in the direct regime
+  int exactContacts = 0;       // triangle contacts in the exact regime (closed form)
   int sphereContacts = 0;      // contacts of a sphere body with a sphere body or partner (one per pair)
   int slidingContacts = 0;     // triangle and sphere contacts sliding (Eq. 21, or all of a pair's whose spring slides)
   int neighbourRebuilds = 0;   // rebuilds of the broad phase's neighbour list
@@ -35,7 +36,7 @@ struct ContactStatistics {
   int nearRebuilds = 0;        // near lists rebuilt from the triangle trees
 
   ContactStatistics& operator+=(const ContactStatistics& other);
-  int contacts() const { return quadratureContacts + directContacts + sphereContacts; }
+  int contacts() const { return quadratureContacts + directContacts + exactContacts + sphereContacts; }
 };
 
 // Wall-clock seconds of each stage of the last step.
@@ -78,16 +79,17 @@ struct PairSummary {
                                        // slant, longer than that (doc/physics.md, "Which triangle pairs touch")
   int triangleContacts = 0;
   bool sliding = false;                // the pair's spring slides, or (viscous law) any triangle contact (Eq. 21)
-  Real elasticEnergy = 0;              // sum of (2/5) F_elastic delta_s over the triangle contacts, and the energy
-                                       // of the pair's tangential spring [J]
+  Real elasticEnergy = 0;              // sum of the triangle contacts' elastic energies (NormalLoad), and the
+                                       // energy of the pair's tangential spring [J]
   Real dampingPower = 0;               // sum of (Fn - F_elastic) ddelta_s/dt: dissipated by normal damping [W]
   Real frictionPower = 0;              // dissipated by friction [W]: sum of -F_t . v_t (viscous law), or the
                                        // spring's SpringLoad::dissipatedPower
 
-  // Adds one contact's overlap, elastic energy (2/5 F_elastic delta_s, doc/physics.md "Energy") and normal damping.
+  // Adds one contact's overlap, elastic energy (NormalLoad::elasticEnergy, doc/physics.md "Energy") and normal
+  // damping.
   void add(const PressureGeom& geom, const NormalLoad& load) {
     deepestOverlap = std::max(deepestOverlap, geom.effectiveOverlap);
-    elasticEnergy += 0.4 * load.elasticForce * geom.sphereOverlap;
+    elasticEnergy += load.elasticEnergy;
     dampingPower += (load.force - load.elasticForce) * geom.overlapRate;
   }
 };

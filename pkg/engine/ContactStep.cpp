@@ -67,11 +67,12 @@ void reportStep(const ContactModel& model, const ContactData& data, bool first, 
     report.energy.dampingPower += s.dampingPower;
     report.energy.frictionPower += s.frictionPower;
   }
-  if (!first) return;
   for (const PairRecord& r : data.keptRecords) {
     const Real size = std::min(sideSize(model, r.body), sideSize(model, r.other));
-    if (r.overlap > kDeepestOverlap * size) report.deepStarts.push_back({r.body, r.other, r.overlap, size});
+    if (r.overlap / size > report.deepest.overlap / report.deepest.size) report.deepest = {r.body, r.other, r.overlap, size};
+    if (first && r.overlap > kDeepestOverlap * size) report.deepStarts.push_back({r.body, r.other, r.overlap, size});
   }
+  if (!first) return;
   std::stable_sort(report.deepStarts.begin(), report.deepStarts.end(),
                    [](const DeepPair& a, const DeepPair& b) { return a.overlap / a.size > b.overlap / b.size; });
 }

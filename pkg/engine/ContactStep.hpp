@@ -15,8 +15,8 @@
 //   5. checkStopRules   a centre through a face, or an overlap past stopOverlap that grows (StopRules.hpp)
 //                       -> report.stops. A step that breaks one stops here and is not kept: redoing it stops again.
 //   6. commitStep       the step becomes the one the next is compared with
-//   7. reportStep       the body fastest for its contact depth, the pairs that start deeper than a Hertz contact
-//                       (on the first step), the contacts' energies -> the report
+//   7. reportStep       the body fastest for its contact depth, the deepest pair for its size, the pairs that
+//                       start deeper than a Hertz contact (on the first step), the contacts' energies -> the report
 // contactForces is stages 2-4: the forces alone, for tests and benchmarks of the contacts.
 #pragma once
 
@@ -63,6 +63,8 @@ struct StepReport {
   // The pairs deeper than a Hertz contact, on the first step kept since data was made: bodies placed inside each
   // other, not in contact. Deepest for its size first.
   std::vector<DeepPair> deepStarts;
+  // The pair that overlaps most for its size in this step (overlap 0, body -1 if none touches).
+  DeepPair deepest{-1, -1, 0, 1};
   ContactEnergy energy;
 
   bool kept() const { return !unstable && stops.empty(); }

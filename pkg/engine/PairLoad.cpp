@@ -1,12 +1,53 @@
 #include "pkg/engine/PairLoad.hpp"
 
 #include <algorithm>
+#include <variant>
 
 #include "pkg/engine/PairFriction.hpp"
 #include "pkg/engine/PairGeometry.hpp"
+#include "pkg/law/ContactEnergyGradient.hpp"
 #include "pkg/phys/HertzPhys.hpp"
 
 namespace roundedmesh {
+namespace {
+
+// Body 2 of a triangle contact as the energy law sees it (ContactEnergyGradient.hpp), in body 1's frame: the pose
+// of a rounded body 2 (x1 = rotation * x2 + translation), or its partner shape.
+struct EnergyFrame {
+  const RoundedMesh* mesh2 = nullptr;
+  Matrix3r rotation = Matrix3r::Identity();
+  Vector3r translation = Vector3r::Zero();
+  EnergyPartner::Kind kind = EnergyPartner::Plane;
+
+  EnergyPartner partner(const PressureGeom& geom) const {
+    EnergyPartner p{kind};
+    if (kind == EnergyPartner::Triangle) {
+      const Triangle& corners = mesh2->triangles()[geom.partnerTriangle];
+      for (int i = 0; i < 3; ++i) p.corners[i] = rotation * mesh2->vertices()[corners[i]] + translation;
+      p.sphereCentre = rotation * mesh2->rounded(geom.partnerTriangle).sphereCentre + translation;
+    } else if (kind == EnergyPartner::Sphere) {
+      p.sphereCentre = translation;
+    }
+    return p;
+  }
+};
+
+EnergyFrame energyFrame(const ContactModel& model, const BodyPair& pair, const BodyState& s1, const BodyState& s2,
+                        const Matrix3r& R_BW) {
+  EnergyFrame frame;
+  const int bodyCount = static_cast<int>(model.bodies.size());
+  frame.translation = R_BW * (s2.position - s1.position);
+  if (pair.other < bodyCount) {
+    frame.kind = EnergyPartner::Triangle;
+    frame.mesh2 = model.bodies[pair.other].mesh.get();
+    frame.rotation = R_BW * s2.orientation.toRotationMatrix();
+  } else if (std::holds_alternative<Sphere>(model.partners[pair.other - bodyCount].shape)) {
+    frame.kind = EnergyPartner::Sphere;
+  }
+  return frame;
+}
+
+}  // namespace
 
 Wrench reaction(const Wrench& onBody, const Vector3r& bodyPosition, const Vector3r& otherPosition) {
   return {-onBody.force, -onBody.torque + (otherPosition - bodyPosition).cross(onBody.force)};
@@ -42,14 +83,31 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   thread_local std::vector<ContactShare> shares;
   shares.clear();
   const size_t listedFrom = contacts ? contacts->size() : 0;
+  const bool energyLaw = model.pressure.normal == NormalLaw::Energy;
+  const EnergyFrame frame = energyLaw ? energyFrame(model, pair, s1, s2, R_WB.transpose()) : EnergyFrame();
   for (const PressureGeom& geom : geoms) {
     const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, model.pressure);
-    ++(load.regime == Regime::Direct ? result.statistics.directContacts : result.statistics.quadratureContacts);
+    ++(load.regime == Regime::Direct  ? result.statistics.directContacts
+       : load.regime == Regime::Exact ? result.statistics.exactContacts
+                                      : result.statistics.quadratureContacts);
     const Triangle& corners = mesh.triangles()[geom.triangle];
     const std::array<Vector3r, 3> x_B = {mesh.vertices()[corners[0]], mesh.vertices()[corners[1]],
                                          mesh.vertices()[corners[2]]};
     const std::array<Real, 3> forces = nodeForces(geom.nodes, load);
-    addNodeForcesToBody(x_B, forces, geom.normal, onBody_B);
+    if (energyLaw) {
+      // The elastic force is the energy's gradient; the damping, the rest of the pressure, acts as the paper's.
+      const NormalLoad damping{load.force - load.elasticForce, load.moment - load.elasticMoment, load.regime};
+      addNodeForcesToBody(x_B, nodeForces(geom.nodes, damping), geom.normal, onBody_B);
+      const Real energyAmplitude = 4 * phys.effectiveModulus / (3 * M_PI * geom.radius * geom.radius);
+      const EnergyForces elastic = contactEnergyGradient(geom, load.elasticForce, energyAmplitude, x_B,
+                                                         mesh.rounded(geom.triangle).sphereCentre, frame.partner(geom));
+      for (int k = 0; k < elastic.count; ++k) {
+        onBody_B.force -= elastic.onBody2[k].force;
+        onBody_B.torque -= elastic.onBody2[k].point.cross(elastic.onBody2[k].force);
+      }
+    } else {
+      addNodeForcesToBody(x_B, forces, geom.normal, onBody_B);
+    }
     const Vector3r point_B = planePoint(geom, geom.effectivePoint);
     // Fn acts at c + (-Mn_y, Mn_x) / Fn (NodeForces.hpp), so Fn times that point needs no division.
     const Vector3r weighted_B =

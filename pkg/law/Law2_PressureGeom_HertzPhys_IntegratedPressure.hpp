@@ -2,7 +2,10 @@
 // circle's centre c, from the pressure of Eq. 9 over the contact circle Omega intersected with S.
 //   quadrature regime (Eqs. 11-13): Dunavant's 16-point rule on each triangle of a fan over S;
 //   direct regime (Eq. 14, when pi a^2 < gamma A_S / (N_S N_Q)): the whole-circle force of Eq. 7 scaled by
-//   the exact area fraction A(S n Omega) / A(Omega), acting at c_eff.
+//   the exact area fraction A(S n Omega) / A(Omega), acting at c_eff;
+//   exact regime (beyond the paper, an option: regime='exact'): the integrals over S n Omega in closed form
+//   (DiskPolygonIntegrals.hpp), force, moment and the contact's elastic energy, with no quadrature error and no
+//   switch between regimes.
 // A_S / (N_S N_Q) is the mean area per quadrature point over S's N_S fan triangles; for a triangular S
 // it is the paper's A_j / N_Q. An elliptical contact is integrated the same way over T(S), where its pressure is
 // circular (PressureGeom.hpp); areas are kept, and the moment is mapped back to the plane.
@@ -13,13 +16,19 @@
 
 namespace roundedmesh {
 
-enum class Regime { Quadrature, Direct };
-enum class RegimeChoice { Auto, Quadrature, Direct };
+enum class Regime { Quadrature, Direct, Exact };
+enum class RegimeChoice { Auto, Quadrature, Direct, Exact };
+
+// How a triangle contact's elastic force acts on the bodies: the paper's, its integrated pressure at its centre of
+// pressure (Eq. 15); or the exact gradient of its energy (ContactEnergyGradient.hpp, beyond the paper, an option),
+// which integrates in closed form (the exact regime).
+enum class NormalLaw { Pressure, Energy };
 
 struct PressureOptions {
   Real gamma = 10;  // expected number of quadrature points inside the contact circle (Eq. 14)
   RegimeChoice regime = RegimeChoice::Auto;
   CurvatureModel curvature = CurvatureModel::Mean;  // circle (the paper) or ellipse (EllipticalContact.hpp)
+  NormalLaw normal = NormalLaw::Pressure;
 };
 
 struct NormalLoad {
@@ -27,6 +36,11 @@ struct NormalLoad {
   Vector2r moment;   // Mn in plane coordinates (t1, t2): sum of r x (p dA n12) about c [N m]
   Regime regime;
   Real elasticForce = 0;  // the undamped part of Fn: the same integral at ddelta/dt = 0 [N]; Fn - it is damping
+  Vector2r elasticMoment = Vector2r::Zero();  // the undamped part of Mn [N m]
+  // The contact's elastic energy [J]: (2/5) F_elastic delta_s (doc/physics.md, "Energy"), or in the exact regime the
+  // integral over S n Omega of the energy density e = (4 E* / (3 pi R*^2)) (a^2 - r^2)^(3/2), whose
+  // delta_s-derivative at fixed S is the elastic pressure.
+  Real elasticEnergy = 0;
 };
 
 NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& geom, const HertzPhys& phys,

@@ -26,9 +26,11 @@ namespace {
 template <class Enum>
 using Names = std::vector<std::pair<const char*, Enum>>;
 const Names<RegimeChoice> kRegimes = {
-    {"auto", RegimeChoice::Auto}, {"quadrature", RegimeChoice::Quadrature}, {"direct", RegimeChoice::Direct}};
+    {"auto", RegimeChoice::Auto}, {"quadrature", RegimeChoice::Quadrature}, {"direct", RegimeChoice::Direct},
+    {"exact", RegimeChoice::Exact}};
 const Names<FrictionLaw> kFrictionLaws = {{"spring", FrictionLaw::Spring}, {"viscous", FrictionLaw::Viscous}};
 const Names<CurvatureModel> kCurvatures = {{"mean", CurvatureModel::Mean}, {"principal", CurvatureModel::Principal}};
+const Names<NormalLaw> kNormalLaws = {{"pressure", NormalLaw::Pressure}, {"energy", NormalLaw::Energy}};
 
 template <class Enum>
 Enum parse(const Names<Enum>& names, const std::string& given, const char* option) {
@@ -47,13 +49,18 @@ const char* nameOf(const Names<Enum>& names, Enum value) {
   throw std::logic_error("an option value without a name");
 }
 
-PressureOptions pressureOptions(Real gamma, const std::string& regime, const std::string& curvature) {
+PressureOptions pressureOptions(Real gamma, const std::string& regime, const std::string& curvature,
+                                const std::string& normal) {
   if (!(std::isfinite(gamma) && gamma > 0))
     throw std::invalid_argument("gamma must be positive and finite, got " + std::to_string(gamma));
   PressureOptions options;
   options.gamma = gamma;
   options.regime = parse(kRegimes, regime, "regime");
   options.curvature = parse(kCurvatures, curvature, "curvature");
+  options.normal = parse(kNormalLaws, normal, "normal");
+  if (options.normal == NormalLaw::Energy && options.curvature != CurvatureModel::Mean)
+    throw std::invalid_argument("normal='energy' takes the contact circle of curvature='mean', not the ellipse of '" +
+                                curvature + "'");
   return options;
 }
 
@@ -69,6 +76,7 @@ bp::dict engineOptionDefaults() {
   d["friction"] = nameOf(kFrictionLaws, model.friction);
   d["stop_overlap"] = model.stopOverlap;
   d["curvature"] = nameOf(kCurvatures, pressure.curvature);
+  d["normal"] = nameOf(kNormalLaws, pressure.normal);
   return d;
 }
 
@@ -83,7 +91,17 @@ bp::dict engineOptionChoices() {
   d["regime"] = names(kRegimes);
   d["friction"] = names(kFrictionLaws);
   d["curvature"] = names(kCurvatures);
+  d["normal"] = names(kNormalLaws);
   return d;
+}
+
+// The energy law (ContactEnergyGradient.hpp) knows spheres, rounded bodies and infinite planes; a Box's or a
+// Facet's finite face would add the edges of its outline, not done yet.
+void requireEnergyPartner(const PartnerShape& shape, int id) {
+  if (std::holds_alternative<Box>(shape) || std::holds_alternative<Facet>(shape))
+    throw std::invalid_argument(std::string("normal='energy' does not take ") +
+                                (std::holds_alternative<Box>(shape) ? "Box" : "Facet") + " partners yet (body " +
+                                std::to_string(id) + "): Walls, Spheres and rounded bodies only");
 }
 
 bp::tuple asTuple(const StabilityLimit& limit, int bodyId, int otherId) {
@@ -107,10 +125,13 @@ class SceneContacts {
     model_.partners.push_back({id, sphereShape(body, id), material, true});
   }
   void setOptions(Real gamma, const std::string& regime, const std::string& friction, Real stopOverlap,
-                  const std::string& curvature) {
+                  const std::string& curvature, const std::string& normal) {
     if (!(stopOverlap > 0))
       throw std::invalid_argument("stop_overlap must be positive (math.inf: never), got " + std::to_string(stopOverlap));
-    model_.pressure = pressureOptions(gamma, regime, curvature);
+    const PressureOptions pressure = pressureOptions(gamma, regime, curvature, normal);
+    if (pressure.normal == NormalLaw::Energy)
+      for (const Partner& p : model_.partners) requireEnergyPartner(p.shape, p.id);
+    model_.pressure = pressure;
     model_.friction = frictionLaw(friction);
     model_.stopOverlap = stopOverlap;
     data_.checkedTimeStep = {};  // the limit depends on the friction law
@@ -141,6 +162,7 @@ class SceneContacts {
     if (r.kept()) {
       applyWrenches(omega, model_, data_);
       keepSprings(omega);
+      deepest_ = r.deepest;
     }
     readMs_ = std::chrono::duration<Real, std::milli>(read - start).count();
     writeMs_ = std::chrono::duration<Real, std::milli>(std::chrono::steady_clock::now() - computed).count();
@@ -252,6 +274,7 @@ class SceneContacts {
     s["rejected_through_body"] = c.narrowPhase.throughBody;
     s["quadrature_contacts"] = c.quadratureContacts;
     s["direct_contacts"] = c.directContacts;
+    s["exact_contacts"] = c.exactContacts;
     s["sphere_contacts"] = c.sphereContacts;
     s["sliding_contacts"] = c.slidingContacts;
     s["neighbour_rebuilds"] = c.neighbourRebuilds;
@@ -262,6 +285,8 @@ class SceneContacts {
     s["reduction_ms"] = 1e3 * data_.times.reduction;
     s["read_ms"] = readMs_;
     s["write_ms"] = writeMs_;
+    s["deepest_pair_overlap"] = deepest_.overlap;
+    s["deepest_pair_fraction"] = deepest_.overlap / deepest_.size;
     return s;
   }
 
@@ -337,6 +362,7 @@ class SceneContacts {
   std::string springToken_;  // the token of the springs the engine holds; "": none
   static inline long springWrites_ = 0;
   Real readMs_ = 0, writeMs_ = 0;  // the bridge's share of the last step: states in, wrenches out
+  DeepPair deepest_{-1, -1, 0, 1};  // of the last kept step
 };
 
 void requireFinite(const Vector3r& v, const char* name) {
@@ -367,7 +393,7 @@ bp::dict describe(const TriangleContact& c) {
   d["contact_radius"] = c.geom.contactRadius;
   d["point"] = c.point;
   d["normal"] = c.normal;
-  d["regime"] = c.load.regime == Regime::Direct ? "direct" : "quadrature";
+  d["regime"] = c.load.regime == Regime::Direct ? "direct" : c.load.regime == Regime::Exact ? "exact" : "quadrature";
   d["normal_force"] = c.load.force;
   d["tangential_force"] = c.friction.force;
   d["sliding"] = c.friction.sliding;
@@ -390,13 +416,13 @@ bp::tuple asTuple(const PairEvaluation& e) {
 bp::tuple planeContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& planePoint,
                        const Vector3r& planeNormal, const HertzMaterial& meshMaterial,
                        const HertzMaterial& planeMaterial, const Vector3r& vel, const Vector3r& angVel, Real gamma,
-                       const std::string& regime, const std::string& friction, const std::string& curvature) {
+                       const std::string& regime, const std::string& friction, const std::string& curvature, const std::string& normal) {
   requireFinite(planePoint, "plane_point");
   requireFinite(planeNormal, "plane_normal");
   if (planeNormal.norm() == 0) throw std::invalid_argument("plane_normal must not be zero");
   const PairEvaluation e = roundedmesh::planeContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
                                                      Plane{planePoint, planeNormal.normalized()}, planeMaterial,
-                                                     pressureOptions(gamma, regime, curvature), false,
+                                                     pressureOptions(gamma, regime, curvature, normal), false,
                                                      frictionLaw(friction));
   return bp::make_tuple(e.onFirst.force, e.onFirst.torque);
 }
@@ -405,23 +431,24 @@ bp::tuple sphereContact(const BodyMesh& mesh, const Vector3r& pos, const Quatern
                         Real radius, const HertzMaterial& meshMaterial, const HertzMaterial& sphereMaterial,
                         const Vector3r& vel, const Vector3r& angVel, const Vector3r& sphereVel,
                         const Vector3r& sphereAngVel, Real gamma, const std::string& regime, bool details,
-                        const std::string& friction, const std::string& curvature) {
+                        const std::string& friction, const std::string& curvature, const std::string& normal) {
   requireFinite(centre, "centre");
   if (!(std::isfinite(radius) && radius > 0))
     throw std::invalid_argument("radius must be positive and finite, got " + std::to_string(radius));
   return asTuple(roundedmesh::sphereContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
                                             Sphere{radius},
                                             bodyState(centre, Quaternionr::Identity(), sphereVel, sphereAngVel, 2),
-                                            sphereMaterial, pressureOptions(gamma, regime, curvature), details,
+                                            sphereMaterial, pressureOptions(gamma, regime, curvature, normal), details,
                                             frictionLaw(friction)));
 }
 
 bp::tuple partnerContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const bp::object& partner,
                          const HertzMaterial& meshMaterial, const HertzMaterial& partnerMaterial, const Vector3r& vel,
                          const Vector3r& angVel, Real gamma, const std::string& regime, bool details,
-                         const std::string& friction, const std::string& curvature) {
+                         const std::string& friction, const std::string& curvature, const std::string& normal) {
   const int id = bp::extract<int>(partner.attr("id"));
   const PartnerShape shape = yadeShape(partner, id);
+  if (normal == nameOf(kNormalLaws, NormalLaw::Energy)) requireEnergyPartner(shape, id);
   const bp::object s = partner.attr("state");
   BodyState partnerState;
   partnerState.position = bp::extract<Vector3r>(s.attr("pos"));
@@ -436,17 +463,18 @@ bp::tuple partnerContact(const BodyMesh& mesh, const Vector3r& pos, const Quater
   partnerState.orientation.normalize();
   return asTuple(roundedmesh::partnerContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
                                              shape, partnerState, partnerMaterial,
-                                             pressureOptions(gamma, regime, curvature), details, frictionLaw(friction)));
+                                             pressureOptions(gamma, regime, curvature, normal), details, frictionLaw(friction)));
 }
 
 bp::tuple bodyContact(const BodyMesh& mesh1, const Vector3r& pos1, const Quaternionr& ori1, const BodyMesh& mesh2,
                       const Vector3r& pos2, const Quaternionr& ori2, const HertzMaterial& material1,
                       const HertzMaterial& material2, const Vector3r& vel1, const Vector3r& angVel1,
                       const Vector3r& vel2, const Vector3r& angVel2, Real gamma, const std::string& regime,
-                      bool details, const std::string& friction, const std::string& curvature) {
+                      bool details, const std::string& friction, const std::string& curvature,
+                      const std::string& normal) {
   return asTuple(roundedmesh::bodyContact(roundedBody(0, mesh1, material1), bodyState(pos1, ori1, vel1, angVel1, 1),
                                           roundedBody(1, mesh2, material2), bodyState(pos2, ori2, vel2, angVel2, 2),
-                                          pressureOptions(gamma, regime, curvature), details, frictionLaw(friction)));
+                                          pressureOptions(gamma, regime, curvature, normal), details, frictionLaw(friction)));
 }
 
 const char* partnerKindName(const Plane&) { return "Plane"; }
@@ -464,7 +492,8 @@ void exposeContactStep() {
       .def("add_partner", &SceneContacts::addPartner, (bp::arg("body"), bp::arg("material")))
       .def("add_sphere", &SceneContacts::addSphere, (bp::arg("body"), bp::arg("material")))
       .def("set_options", &SceneContacts::setOptions,
-           (bp::arg("gamma"), bp::arg("regime"), bp::arg("friction"), bp::arg("stop_overlap"), bp::arg("curvature")))
+           (bp::arg("gamma"), bp::arg("regime"), bp::arg("friction"), bp::arg("stop_overlap"), bp::arg("curvature"),
+            bp::arg("normal")))
       .def("step", &SceneContacts::step, bp::arg("O"))
       .def("stability_limit", &SceneContacts::stabilityLimit, (bp::arg("O"), bp::arg("impact_speed") = 0.0))
       .add_property("statistics", &SceneContacts::statistics)
@@ -483,6 +512,7 @@ void exposeContactStep() {
   const char* regime = nameOf(kRegimes, pressure.regime);
   const char* friction = nameOf(kFrictionLaws, ContactModel().friction);
   const char* curvature = nameOf(kCurvatures, pressure.curvature);
+  const char* normalLaw = nameOf(kNormalLaws, pressure.normal);
   bp::def("partner_kind", +[](const bp::object& body) {
             const int id = bp::extract<int>(body.attr("id"));
             return std::visit([](const auto& shape) { return partnerKindName(shape); }, yadeShape(body, id));
@@ -493,11 +523,12 @@ void exposeContactStep() {
           (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("plane_point"), bp::arg("plane_normal"),
            bp::arg("mesh_material"), bp::arg("plane_material"), bp::arg("vel") = Vector3r(Vector3r::Zero()),
            bp::arg("ang_vel") = Vector3r(Vector3r::Zero()), bp::arg("gamma") = pressure.gamma, bp::arg("regime") = regime,
-           bp::arg("friction") = friction, bp::arg("curvature") = curvature),
+           bp::arg("friction") = friction, bp::arg("curvature") = curvature, bp::arg("normal") = normalLaw),
           "(force, torque) on a rounded body at pos, ori, moving with vel, ang_vel, pressed against the fixed\n"
           "plane through plane_point with plane_normal pointing toward the body side. Torque is about pos.\n"
           "gamma and regime ('auto', 'quadrature', 'direct') select the pressure integration (Eq. 14); friction\n"
-          "('spring', 'viscous') the tangential law and curvature ('mean', 'principal') the contact's curvature, as\n"
+          "('spring', 'viscous') the tangential law, curvature ('mean', 'principal') the contact's curvature and\n"
+          "normal ('pressure', 'energy') how the elastic force acts, as\n"
           "for rm.engine: the spring of a contact evaluated once has no history, so only its damping acts.");
 
   const Vector3r zero = Vector3r::Zero();
@@ -506,19 +537,19 @@ void exposeContactStep() {
            bp::arg("mesh_material"), bp::arg("sphere_material"), bp::arg("vel") = zero, bp::arg("ang_vel") = zero,
            bp::arg("sphere_vel") = zero, bp::arg("sphere_ang_vel") = zero, bp::arg("gamma") = pressure.gamma,
            bp::arg("regime") = regime, bp::arg("details") = false, bp::arg("friction") = friction,
-           bp::arg("curvature") = curvature),
+           bp::arg("curvature") = curvature, bp::arg("normal") = normalLaw),
           "(F1, T1, F2, T2, contacts): see roundedmesh.sphere_contact.");
   bp::def("_partner_contact", &partnerContact,
           (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("partner"), bp::arg("mesh_material"),
            bp::arg("partner_material"), bp::arg("vel") = zero, bp::arg("ang_vel") = zero, bp::arg("gamma") = pressure.gamma,
            bp::arg("regime") = regime, bp::arg("details") = false, bp::arg("friction") = friction,
-           bp::arg("curvature") = curvature),
+           bp::arg("curvature") = curvature, bp::arg("normal") = normalLaw),
           "(F1, T1, F2, T2, contacts): see roundedmesh.partner_contact.");
   bp::def("_body_contact", &bodyContact,
           (bp::arg("mesh1"), bp::arg("pos1"), bp::arg("ori1"), bp::arg("mesh2"), bp::arg("pos2"), bp::arg("ori2"),
            bp::arg("material1"), bp::arg("material2"), bp::arg("vel1") = zero, bp::arg("ang_vel1") = zero,
            bp::arg("vel2") = zero, bp::arg("ang_vel2") = zero, bp::arg("gamma") = pressure.gamma, bp::arg("regime") = regime,
-           bp::arg("details") = false, bp::arg("friction") = friction, bp::arg("curvature") = curvature),
+           bp::arg("details") = false, bp::arg("friction") = friction, bp::arg("curvature") = curvature, bp::arg("normal") = normalLaw),
           "(F1, T1, F2, T2, contacts): see roundedmesh.body_contact.");
 }
 

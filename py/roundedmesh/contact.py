@@ -8,7 +8,8 @@ validation, for pictures, and to look inside a contact.
 
 Forces [N] and torques [N m] are global; each torque is about its own body's position. Velocities [m/s] and
 angular velocities [rad/s] are global. gamma and regime choose the pressure integration, friction ('spring' or
-'viscous') the tangential law and curvature ('mean' or 'principal') the contact's shape, as for engine(); a contact
+'viscous') the tangential law, curvature ('mean' or 'principal') the contact's shape and normal ('pressure' or
+'energy') how its elastic force acts, as for engine(); a contact
 evaluated once has no history, so the spring's displacement is zero and only its damping -c v_t acts (capped by
 Coulomb).
 """
@@ -18,42 +19,43 @@ from ._core import ENGINE_OPTIONS, _body_contact, _partner_contact, _sphere_cont
 
 _ZERO = (0.0, 0.0, 0.0)
 # The engine's defaults (pkg/law, pkg/engine: _core.ENGINE_OPTIONS).
-_GAMMA, _REGIME, _FRICTION, _CURVATURE = (ENGINE_OPTIONS[k] for k in ("gamma", "regime", "friction", "curvature"))
+_GAMMA, _REGIME, _FRICTION, _CURVATURE, _NORMAL = (ENGINE_OPTIONS[k]
+                                                   for k in ("gamma", "regime", "friction", "curvature", "normal"))
 
 
 def body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
                  vel2=_ZERO, ang_vel2=_ZERO, gamma=_GAMMA, regime=_REGIME, friction=_FRICTION,
-                 curvature=_CURVATURE):
+                 curvature=_CURVATURE, normal=_NORMAL):
     """(force on 1, torque on 1, force on 2, torque on 2) of two rounded bodies: Mesh mesh1 in its principal
     frame placed at pos1 turned by ori1, likewise mesh2; materials are HertzMaterials."""
     return _body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1, ang_vel1, vel2, ang_vel2,
-                         gamma, regime, False, friction, curvature)[:4]
+                         gamma, regime, False, friction, curvature, normal)[:4]
 
 
 def sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel=_ZERO, ang_vel=_ZERO,
                    sphere_vel=_ZERO, sphere_ang_vel=_ZERO, gamma=_GAMMA, regime=_REGIME, friction=_FRICTION,
-                   curvature=_CURVATURE):
+                   curvature=_CURVATURE, normal=_NORMAL):
     """(force on the body, torque on it, force on the sphere, torque on it) of a rounded body against an
     analytic sphere of `radius` [m] centred at `centre` (what a YADE Sphere partner is)."""
     return _sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel, ang_vel, sphere_vel,
-                           sphere_ang_vel, gamma, regime, False, friction, curvature)[:4]
+                           sphere_ang_vel, gamma, regime, False, friction, curvature, normal)[:4]
 
 
 def partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel=_ZERO, ang_vel=_ZERO, gamma=_GAMMA,
-                    regime=_REGIME, friction=_FRICTION, curvature=_CURVATURE, details=False):
+                    regime=_REGIME, friction=_FRICTION, curvature=_CURVATURE, details=False, normal=_NORMAL):
     """(force on the body, torque on it, force on the partner, torque on it about its position) of a rounded body
     (Mesh `mesh` placed at pos, turned by ori) against `partner`, a YADE Body with a Wall, Box, Facet or Sphere shape
     at its own pose and velocity (it need not be in O.bodies), made of `partner_material`. What the engine computes
     for that pair in a step. With details=True a fifth item lists the triangle contacts as dicts (as
     triangle_contacts' rows)."""
     evaluated = _partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel, ang_vel, gamma,
-                                 regime, details, friction, curvature)
+                                 regime, details, friction, curvature, normal)
     return evaluated if details else evaluated[:4]
 
 
 def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
                       vel2=_ZERO, ang_vel2=_ZERO, gamma=_GAMMA, regime=_REGIME, friction=_FRICTION,
-                      curvature=_CURVATURE):
+                      curvature=_CURVATURE, normal=_NORMAL):
     """The triangle pairs in contact in body_contact's configuration, as a dict of numpy arrays with one row
     per pair. `mesh2` may instead be a number: the radius of an analytic sphere centred at pos2 (ori2 is then
     ignored). Columns:
@@ -62,7 +64,7 @@ def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2
         effective_overlap        delta_eff, Eq. B.4 [m]
         radius, contact_radius   R* (Eq. 3) and a (Eq. 5) [m]
         point, normal            c_eff [m] and n12 (rows of 3, global)
-        regime                   'quadrature' or 'direct' (Eq. 14)
+        regime                   'quadrature' or 'direct' (Eq. 14), or 'exact'
         normal_force             F_n on body 2 along n12 [N]
         tangential_force         F_t on body 2 (rows of 3, global) [N]; body 1 receives the opposite. With the
                                  spring, each triangle's share of the pair's force (by its normal force) and twist
@@ -73,10 +75,10 @@ def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2
     curvatures")."""
     if isinstance(mesh2, (int, float)):
         listed = _sphere_contact(mesh1, pos1, ori1, pos2, float(mesh2), material1, material2, vel1, ang_vel1, vel2,
-                                 ang_vel2, gamma, regime, True, friction, curvature)[4]
+                                 ang_vel2, gamma, regime, True, friction, curvature, normal)[4]
     else:
         listed = _body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1, ang_vel1, vel2,
-                               ang_vel2, gamma, regime, True, friction, curvature)[4]
+                               ang_vel2, gamma, regime, True, friction, curvature, normal)[4]
     columns = {}
     for name in ("triangle1", "triangle2"):
         columns[name] = np.array([c[name] for c in listed], dtype=int)

@@ -32,9 +32,9 @@ def critical_timestep(impact_speed=None):
 _STATISTICS = ("body_pairs", "touching_pairs", "candidates", "rejected_not_facing", "rejected_no_overlap",
                "rejected_outside_circle", "rejected_empty_polygon", "rejected_beyond_contact_circle",
                "rejected_through_body",
-               "quadrature_contacts", "direct_contacts", "sphere_contacts", "sliding_contacts", "neighbour_rebuilds",
+               "quadrature_contacts", "direct_contacts", "exact_contacts", "sphere_contacts", "sliding_contacts", "neighbour_rebuilds",
                "candidate_rebuilds", "near_rebuilds", "broad_phase_ms", "pairs_ms", "reduction_ms", "read_ms",
-               "write_ms")
+               "write_ms", "deepest_pair_overlap", "deepest_pair_fraction")
 
 
 def statistics():
@@ -47,8 +47,9 @@ def statistics():
                                circumcircle against the contact circle), empty_polygon (S), beyond_contact_circle,
                                through_body (a pair deeper than 0.1 r_eq whose caps do not reach into the other
                                body: doc/physics.md, "Which triangle pairs touch")
-      quadrature_contacts, direct_contacts   triangle contacts in each regime of Eq. 14 (a sphere body against a
-                               rounded body counts here: the rounded body's triangles meet the sphere)
+      quadrature_contacts, direct_contacts, exact_contacts   triangle contacts in each regime of Eq. 14, and in
+                               the closed form of regime='exact' (a sphere body against a rounded body counts
+                               here: the rounded body's triangles meet the sphere)
       sphere_contacts          contacts of a sphere body with another sphere body or a partner, one per pair
                                (the whole contact circle: no triangles, so not in candidates or rejected_*)
       sliding_contacts         triangle and sphere contacts sliding: all of a pair's whose spring slides (under the
@@ -57,7 +58,11 @@ def statistics():
       candidate_rebuilds       pairs whose candidate triangle pairs were rebuilt (from their near list)
       near_rebuilds            pairs whose near list was searched again in the triangle trees
       broad_phase_ms, pairs_ms, reduction_ms   wall time of each stage of the C++ step
-      read_ms, write_ms        wall time of reading the states from YADE and adding the forces to it
+      read_ms, write_ms        wall time of reading the states from YADE (and the scene's springs, when it did not
+                               write them itself) and of adding the forces (and writing the springs) to it
+      deepest_pair_overlap     the overlap [m] of the pair that overlaps most for its size (contacts()['depth'])
+      deepest_pair_fraction    that overlap over the smaller side's size (r_eq, or a sphere's radius): what the stop
+                               rule compares with stop_overlap
     """
     state = _current_state()
     return state.contacts.statistics if state else dict.fromkeys(_STATISTICS, 0)

@@ -32,7 +32,9 @@ def engine(label="", **options):
     """The engine to put in O.engines between ForceResetter and NewtonIntegrator. Options:
       gamma        -- expected number of quadrature points in a contact circle below which a triangle contact
                       uses the direct regime (Eq. 14); default 10, as in the paper
-      regime       -- 'auto' (Eq. 14), or 'quadrature' / 'direct' to force one regime (for validation)
+      regime       -- 'auto' (Eq. 14), or 'quadrature' / 'direct' to force one regime (for validation), or
+                      'exact': the pressure integrated over each contact's S n Omega in closed form, no quadrature
+                      error and no switch between regimes (doc/physics.md, "The exact regime")
       friction     -- the tangential law of every contact: 'spring' (default), an elastic spring-dashpot per body
                       pair capped by Coulomb, with which bodies rest on slopes; or 'viscous', the paper's no-slip
                       force -c v_t (Eqs. 18-21), with which nothing in contact ever stands still (doc/physics.md,
@@ -44,6 +46,11 @@ def engine(label="", **options):
                       'principal': Hertz's contact ellipse from both principal curvatures of each triangle
                       (Mesh.principal_curvatures), concave triangles following the smooth surface
                       (doc/physics.md, "Principal curvatures: the contact ellipse")
+      normal       -- 'pressure' (default): each triangle contact's elastic force is its integrated pressure at its
+                      centre of pressure (Eq. 15, the paper's); 'energy': the exact gradient of the contacts' energy,
+                      the energy density integrated over each S n Omega, so that the elastic force does no work
+                      round a closed path (doc/physics.md, "The energy law"); curvature 'mean', and Walls, Spheres
+                      and rounded bodies as partners (not yet Boxes and Facets)
     A body whose centre passes through a Wall, Facet or Box it was near in the step before stops the run too
     (doc/user-guide.md, "Choosing the time step").
     """
@@ -60,7 +67,7 @@ def engine(label="", **options):
         raise ValueError(f"stop_overlap: must be positive (math.inf: never), got {chosen['stop_overlap']!r}")
     chosen["stop_overlap"] = float(chosen["stop_overlap"])
     for name, value in (("regime", chosen["regime"]), ("friction", chosen["friction"]),
-                        ("curvature", chosen["curvature"]), ("label", label)):
+                        ("curvature", chosen["curvature"]), ("normal", chosen["normal"]), ("label", label)):
         if not isinstance(value, str):
             raise TypeError(f"{name}: expected a string, got {value!r}")
     SceneContacts().set_options(**chosen)  # refuses a value out of range, naming the option

@@ -92,7 +92,7 @@ def contact_counts(ids):
     rounded bodies, whose contacts are roundedmesh's: (triangle contacts, touching pairs, -1: walls included)."""
     if rm.rounded_bodies():
         s = rm.statistics()
-        return s["quadrature_contacts"] + s["direct_contacts"], s["touching_pairs"], -1
+        return s["quadrature_contacts"] + s["direct_contacts"] + s["exact_contacts"], s["touching_pairs"], -1
     owner = {}
     for body in O.bodies:
         owner[body.id] = body.clumpId if body.isClumpMember else body.id
@@ -183,7 +183,7 @@ def main(argv):
                         choices=["roundedmesh", "clumps", "levelset", "spheres", "roundedmesh-principal"])
     parser.add_argument("--nodes", type=int, default=None,
                         help="nodes of the roundedmesh meshes (Mesh.reference_shape; default its own)")
-    parser.add_argument("--regime", default="auto", choices=("auto", "quadrature", "direct"),
+    parser.add_argument("--regime", default="auto", choices=("auto", "quadrature", "direct", "exact"),
                         help="roundedmesh's pressure integration (roundedmesh.engine)")
     parser.add_argument("--count", type=int, default=40, help="spheres per clump")
     parser.add_argument("--spacing", type=float, default=1e-3, help="level-set grid spacing [m]")

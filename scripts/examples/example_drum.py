@@ -577,7 +577,7 @@ def contact_counts(run):
     """(touching pairs, contacts) of the last step."""
     if run == "roundedmesh":
         s = rm.statistics()
-        return s["touching_pairs"], s["quadrature_contacts"] + s["direct_contacts"] + s.get("sphere_contacts", 0)
+        return s["touching_pairs"], s["quadrature_contacts"] + s["direct_contacts"] + s["exact_contacts"] + s.get("sphere_contacts", 0)
     real = [i for i in O.interactions if i.isReal]
     owner = lambda body: O.bodies[body].clumpId if O.bodies[body].isClumpMember else body  # noqa: E731
     return len({tuple(sorted((owner(i.id1), owner(i.id2)))) for i in real}), len(real)

@@ -164,7 +164,8 @@ def packings_figure(root, runs, radius):
 def summary_table(root, runs, submerged):
     header = ["run", "bodies", "final_mean_height_m", "final_max_height_m", f"P_at_{submerged:.2f}_m_percent",
               "threads", "median_ms_per_step_shaking", "median_cpu_ms_per_step_shaking", "median_ms_per_step_settling",
-              "median_cpu_ms_per_step_settling", "median_contacts_settling", "run_wall_s", "resumed_at"]
+              "median_cpu_ms_per_step_settling", "median_contacts_settling", "largest_pair_overlap_r", "run_wall_s",
+              "resumed_at"]
     table = []
     for run in runs:
         height = read_csv(os.path.join(root, run, "height.csv"))[-1]
@@ -175,7 +176,8 @@ def summary_table(root, runs, submerged):
                       float(height["max_height_m"]) - floor, packing[round(submerged, 2)]["packing_factor_percent"],
                       timing["threads"], timing["shaking_median_ms_per_step"], timing["shaking_median_cpu_ms_per_step"],
                       timing["settling_median_ms_per_step"], timing["settling_median_cpu_ms_per_step"],
-                      timing["settling_median_contacts"], timing["run_wall_s"], timing["resumed_at"]])
+                      timing["settling_median_contacts"], timing.get("largest_pair_overlap_r", ""), timing["run_wall_s"],
+                      timing["resumed_at"]])
     with open(os.path.join(root, "summary.csv"), "w", newline="") as f:
         writer = csv.writer(f)
         writer.writerow(header)

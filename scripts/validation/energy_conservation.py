@@ -111,6 +111,10 @@ def rotation_vector(q_from, q_to):
 
 # --- quasi-static closed loops -----------------------------------------------------------------------------
 
+# The contact law's options (rm.engine's normal and regime; --normal, --regime): every loop and collision uses them.
+CONTACT_OPTIONS = {}
+
+
 class Contact:
     """Body 2 (`shape2`) against body 1 (`shape1` fixed at the origin, turned by q1; or shape1 = 'wall': the
     plane z = 0 of a Wall, normal +z). wrench(x, q) is the (force, torque about x) on body 2 at x turned by q."""
@@ -122,10 +126,10 @@ class Contact:
     def wrench(self, x, q):
         if self.shape1 == "wall":
             f, t = rm.plane_contact(mesh(self.shape2), Vector3(*x), q, Vector3(0, 0, 0), Vector3(0, 0, 1),
-                                    PARTICLE, WALL)
+                                    PARTICLE, WALL, **CONTACT_OPTIONS)
         else:
             f, t = rm.body_contact(mesh(self.shape1), Vector3(0, 0, 0), self.q1, mesh(self.shape2), Vector3(*x), q,
-                                   PARTICLE, PARTICLE)[2:]
+                                   PARTICLE, PARTICLE, **CONTACT_OPTIONS)[2:]
         return np.array(f), np.array(t)
 
     def touching(self, d, u, q):
@@ -386,7 +390,7 @@ def collide(pair, kind, depth, fraction, seed):
             set_spin(i, 0.5 * speed / R_EQ * random_unit(rng))
     O.bodies[ids[0]].state.vel = Vector3(*(-relative * m2 / (m1 + m2)))
     O.bodies[ids[1]].state.vel = Vector3(*(relative * m1 / (m1 + m2)))
-    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(damping=0, gravity=(0, 0, 0)),
+    O.engines = [ForceResetter(), rm.engine(**CONTACT_OPTIONS), NewtonIntegrator(damping=0, gravity=(0, 0, 0)),
                  PyRunner(command=f"__import__('sys').modules[{__name__!r}].record()", iterPeriod=1)]
     O.dt = rm.critical_timestep() / fraction
     before = kinetic_energy(ids)
@@ -480,11 +484,19 @@ PARTS = {"loops": run_loops, "collisions": run_collisions}
 
 
 def main(argv):
+    global LOOP_CASES
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--output", default="out/energy")
     parser.add_argument("--quick", action="store_true", help="fewer loops, segments and collisions")
     parser.add_argument("--only", nargs="+", choices=sorted(PARTS), help="run only these parts")
+    parser.add_argument("--normal", default="pressure", choices=("pressure", "energy"),
+                        help="the elastic force's law (rm.engine(normal=...)); default the paper's pressure")
+    parser.add_argument("--regime", default="auto", choices=("auto", "quadrature", "direct", "exact"))
+    parser.add_argument("--cases", nargs="+", help="only these loop cases (default all)")
     args = parser.parse_args(argv)
+    CONTACT_OPTIONS.update(normal=args.normal, regime=args.regime)
+    if args.cases:
+        LOOP_CASES = tuple(c for c in LOOP_CASES if c in args.cases)
     os.makedirs(args.output, exist_ok=True)
     print(f"{machine()}\n$ {shlex.join(['scripts/validation/energy_conservation.py', *argv])}", flush=True)
     start = time.monotonic()

@@ -162,3 +162,66 @@ TEST(Law2IntegratedPressure, MomentOfAnOffCentreContactMatchesTheIntegratedMomen
 
 }  // namespace
 }  // namespace roundedmesh
+
+namespace roundedmesh {
+namespace {
+
+// The exact regime (closed forms of DiskPolygonIntegrals.hpp): on the flat patch it carries the same integral as
+// the 40 x 40 Gauss-Legendre reference above (1e-12: both exact to round-off), its moment is the quadrature's
+// (1e-8 of F L: the degree-8 rule's error), and its elastic energy is the energy density integrated over the same
+// region, whose derivative in delta_s at fixed S (central differences, step 1e-4 delta: error ~1e-8) is the
+// elastic force. Over a whole circle the energy is Hertz's potential (8/15) E* sqrt(R*) delta^(5/2).
+TEST(Law2IntegratedPressure, ExactRegimeIntegratesInClosedForm) {
+  const Real L = 0.01, R = 1.0, delta = 4e-4, E = 1e6;
+  const RoundedMesh patch = squarePatch(L, R);
+  PressureOptions exact, quadrature;
+  exact.regime = RegimeChoice::Exact;
+  quadrature.regime = RegimeChoice::Quadrature;
+  const HertzPhys phys{E, 0};
+  const Real a = std::sqrt(delta * R);
+  const Real reference = test::integrateRectangle(
+      [&](Real x, Real y) { return 2 * E / (M_PI * R) * std::sqrt(a * a - x * x - y * y); }, -L / 2, L / 2, -L / 2,
+      L / 2, 40);
+  const NormalLoad load = totalLoad(geomsOf(patch, floorFor(patch, delta)), phys, exact);
+  EXPECT_EQ(load.regime, Regime::Exact);
+  EXPECT_NEAR(load.force, reference, 1e-12 * reference);
+  // A floor tilted by a few milliradians moves the circle's centre (R = 1 m) off the patch's by 0.3 L and 0.2 L:
+  // the moment is not zero by symmetry.
+  const RoundedTriangle& t = patch.rounded(0);
+  const Vector3r normal = Vector3r(-0.3 * L, 0.2 * L, 1).normalized();
+  const Plane tilted{t.sphereCentre - (t.radius - delta) * normal, normal};
+  for (const PressureGeom& g : geomsOf(patch, tilted)) {
+    const NormalLoad e = Law2_PressureGeom_HertzPhys_IntegratedPressure(g, phys, exact);
+    const NormalLoad q = Law2_PressureGeom_HertzPhys_IntegratedPressure(g, phys, quadrature);
+    ASSERT_GT(q.moment.norm(), 0.1 * q.force * L);
+    EXPECT_NEAR(e.force, q.force, 1e-8 * q.force);
+    EXPECT_NEAR((e.moment - q.moment).norm(), 0, 1e-8 * q.force * L);
+    EXPECT_EQ(e.elasticForce, e.force);  // no damping here
+    // dU/d(delta_s) at fixed S: the contact radius follows delta_s (a^2 = R delta_s), S does not move.
+    PressureGeom deeper = g, shallower = g;
+    const Real step = 1e-4 * g.sphereOverlap;
+    for (auto [geom, sign] : {std::pair<PressureGeom*, Real>{&deeper, 1}, {&shallower, -1}}) {
+      geom->sphereOverlap += sign * step;
+      geom->contactRadius = std::sqrt(geom->sphereOverlap * geom->radius);
+    }
+    const Real slope = (Law2_PressureGeom_HertzPhys_IntegratedPressure(deeper, phys, exact).elasticEnergy -
+                        Law2_PressureGeom_HertzPhys_IntegratedPressure(shallower, phys, exact).elasticEnergy) /
+                       (2 * step);
+    EXPECT_NEAR(slope, e.elasticForce, 1e-7 * e.elasticForce);
+  }
+  // A contact circle wholly inside S: Hertz's force and potential.
+  const RoundedMesh large = squarePatch(1.0, 2.0);
+  const std::vector<PressureGeom> whole = geomsOf(large, floorFor(large, 1e-5));
+  Real force = 0, energy = 0;
+  for (const PressureGeom& g : whole) {
+    const NormalLoad e = Law2_PressureGeom_HertzPhys_IntegratedPressure(g, phys, exact);
+    force += e.force;
+    energy += e.elasticEnergy;
+  }
+  const Real d = whole[0].sphereOverlap;
+  EXPECT_NEAR(force, 4.0 / 3 * E * std::sqrt(2.0) * std::pow(d, 1.5), 1e-12 * force);
+  EXPECT_NEAR(energy, 8.0 / 15 * E * std::sqrt(2.0) * std::pow(d, 2.5), 1e-12 * energy);
+}
+
+}  // namespace
+}  // namespace roundedmesh

@@ -149,7 +149,7 @@ def test_engine_options():
     with pytest.raises(ValueError, match="gamma"):
         rm.engine(gamma=-1)
     with pytest.raises(ValueError, match="regime"):
-        rm.engine(regime="exact")
+        rm.engine(regime="trapezoid")
     with pytest.raises(TypeError, match="regime"):
         rm.engine(regime=3)
     with pytest.raises(TypeError, match="label"):

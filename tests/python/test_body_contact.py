@@ -129,7 +129,7 @@ def test_body_contact_arguments():
         with pytest.raises(error, match=match):
             rm.body_contact(**{**args, name: bad})
     with pytest.raises(ValueError, match="regime"):
-        rm.body_contact(**args, regime="exact")
+        rm.body_contact(**args, regime="trapezoid")
     rigid = rm.HertzMaterial(young=math.inf, poisson=0.3, density=1)
     with pytest.raises(ValueError, match="young"):
         rm.body_contact(**{**args, "material1": rigid, "material2": rigid})

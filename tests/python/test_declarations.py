@@ -26,9 +26,10 @@ def test_a_material_record_names_every_field_and_restores_it():
 
 def test_the_engine_options_and_their_defaults_come_from_core():
     assert _core.ENGINE_OPTIONS == {"gamma": 10.0, "regime": "auto", "friction": "spring",
-                                    "stop_overlap": _core.STOP_OVERLAP, "curvature": "mean"}
-    assert _core.ENGINE_CHOICES == {"regime": ("auto", "quadrature", "direct"), "friction": ("spring", "viscous"),
-                                    "curvature": ("mean", "principal")}
+                                    "stop_overlap": _core.STOP_OVERLAP, "curvature": "mean", "normal": "pressure"}
+    assert _core.ENGINE_CHOICES == {"regime": ("auto", "quadrature", "direct", "exact"),
+                                    "friction": ("spring", "viscous"), "curvature": ("mean", "principal"),
+                                    "normal": ("pressure", "energy")}
     command = rm.engine().command
     for name, value in _core.ENGINE_OPTIONS.items():
         assert f"{name}={value!r}" in command

@@ -1,0 +1,46 @@
+// The elastic force of one triangle contact as the exact gradient of its energy (doc/physics.md, "The energy law"):
+//   U = integral over S n Omega of e dA,   e = (4 E* / (3 pi R*^2)) (a^2 - r^2)^(3/2),   a^2 = R* delta_s,
+// a function of the two bodies' relative pose through the spheres' centres s1, s2 (delta_s, the plane's normal n12
+// and centre c) and the corners of the triangles projected on the plane (the polygon S = P' n Q'). Its gradient:
+//   - dU/d(delta_s) = the integral of the elastic pressure, F_el (Law2's elasticForce): a central force along n12;
+//   - dU/du_j, u_j a projected corner: each edge of P' or Q' on the boundary of S moves outward, adding
+//     e ds along its part inside Omega, shared between its two corners by the distance along it:
+//     g_j = k m_e integral of (1 - l) w^3 ds (m_e the edge's outward normal, k = 4 E* / (3 pi R*^2));
+//   - the plane turns with n12 = (s2 - s1) / |s2 - s1|, which moves every projected corner: a force at s2 of
+//     sum_j eta_j g_j / |s2 - s1|, eta_j = (X_j - s1) . n12 the corner's height above s1.
+// So, as forces on body 2 at points (body 1's frame), against a rounded triangle or a sphere: F_el n12 + that sum at s2,
+// and -g_j at each of body 2's corners; against a plane (c the foot of s1): F_el n12 - sum_j g_j at s1 and +g_j at
+// each of body 1's corners. Body 1 receives the opposite forces at the same points. Only the circular contact
+// (curvature 'mean').
+#pragma once
+
+#include <array>
+
+#include "pkg/geom/PressureGeom.hpp"
+
+namespace roundedmesh {
+
+// Body 2 as the energy sees it: a rounded triangle (its sphere's centre and corners), a sphere, or a plane.
+struct EnergyPartner {
+  enum Kind { Triangle, Sphere, Plane } kind;
+  Vector3r sphereCentre = Vector3r::Zero();  // s2 (not for a plane)
+  std::array<Vector3r, 3> corners;           // a triangle's, in the order of geom.partnerNodes
+};
+
+struct PointForce {
+  Vector3r point = Vector3r::Zero();
+  Vector3r force = Vector3r::Zero();
+};
+
+struct EnergyForces {
+  std::array<PointForce, 4> onBody2;
+  int count = 0;
+};
+
+// corners1: body 1's triangle corners in the order of geom.nodes, sphere1: its sphere's centre s1 [m], body 1's frame.
+// elasticForce [N], energyAmplitude k [Pa/m^2].
+EnergyForces contactEnergyGradient(const PressureGeom& geom, Real elasticForce, Real energyAmplitude,
+                                   const std::array<Vector3r, 3>& corners1, const Vector3r& sphere1,
+                                   const EnergyPartner& partner);
+
+}  // namespace roundedmesh
