@@ -130,6 +130,8 @@ def parse(argv):
     parser.add_argument("--sample", type=int, default=100, help="steps per window of height.csv (default 100)")
     parser.add_argument("--frames", type=int, default=14, help="ParaView frames over a run (default 14)")
     parser.add_argument("--threads", type=int, default=1, help="OpenMP threads (default 1)")
+    parser.add_argument("--normal", default="pressure", choices=("pressure", "energy"),
+                        help="roundedmesh's normal law, rm.engine(normal=...) (default the paper's pressure)")
     parser.add_argument("--checkpoint-every", type=int, default=1000,
                         help="steps between checkpoints, a multiple of --sample (default 1000)")
     parser.add_argument("--resume", action="store_true", help="continue each run from its checkpoint")
@@ -176,14 +178,15 @@ def parse(argv):
 
 def scene_parameters(args, run):
     """What makes two runs the same scene: a checkpoint of other parameters is refused."""
-    return {"run": run, "count": args.count, "seed": args.seed, "dt": args.dt, "duration": args.duration}
+    return {"run": run, "count": args.count, "seed": args.seed, "dt": args.dt, "duration": args.duration,
+            "normal": args.normal}
 
 
 def child_command(args, run, check):
     command = [sys.executable, os.path.abspath(__file__), "--run", run, "--count", str(args.count),
                "--seed", str(args.seed), "--dt", repr(args.dt), "--duration", repr(args.duration),
                "--sample", str(args.sample), "--frames", str(args.frames), "--threads", str(args.threads),
-               "--checkpoint-every", str(args.checkpoint_every), "--output", args.output]
+               "--checkpoint-every", str(args.checkpoint_every), "--normal", args.normal, "--output", args.output]
     return command + (["--resume"] if args.resume else []) + (["--check"] if check else [])
 
 
@@ -270,7 +273,7 @@ def box_walls():
             utils.wall(-HALF_BASE, axis=1, sense=1), utils.wall(HALF_BASE, axis=1, sense=-1)]
 
 
-def build_roundedmesh(run, poses):
+def build_roundedmesh(run, poses, normal="pressure"):
     """The bodies of `run` at `poses`, the box as roundedmesh partners and the engines. Returns (body ids, wall
     ids, description)."""
     O.reset()
@@ -287,7 +290,7 @@ def build_roundedmesh(run, poses):
     walls = [O.bodies.append(wall) for wall in box_walls()]
     for wall in walls:
         rm.assign_material(wall, BOX)
-    O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -GRAVITY), damping=0)]
+    O.engines = [ForceResetter(), rm.engine(normal=normal), NewtonIntegrator(gravity=(0, 0, -GRAVITY), damping=0)]
     if mesh is None:
         return bodies, walls, f"analytic spheres of radius {RADIUS} m"
     volume = (f"the sphere's mass; the mesh's volume {mesh.volume:.6g} m^3" if run in ICOSPHERE_SUBDIVISIONS
@@ -320,7 +323,8 @@ def build(args, run):
     """Resets YADE and builds S1 for `run`: the bodies on the lattice, the box and its motion, the recorder.
     Returns (body ids, wall ids, the box's HarmonicMotionEngine, description)."""
     poses = lattice_poses(args.count, args.seed)
-    bodies, walls, description = (build_roundedmesh if run in SHAPES else build_peer)(run, poses)
+    bodies, walls, description = (build_roundedmesh(run, poses, args.normal) if run in SHAPES
+                                  else build_peer(run, poses))
     omega = 2 * math.pi / PERIOD
     x = omega * args.dt / 2  # see the module docstring: the step's mean velocity, not its first
     box = HarmonicMotionEngine(A=(0, 0, AMPLITUDE * math.sin(x) / x), f=(0, 0, 1 / PERIOD),

@@ -15,20 +15,22 @@
 #include <sstream>
 #include <vector>
 
+#include "pkg/io/GtsFile.hpp"
 #include "pkg/shape/SurfaceRepair.hpp"
 
 namespace roundedmesh {
 namespace {
 
 using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-constexpr std::array<const char*, 4> kFormats = {"obj", "stl", "off", "ply"};
+constexpr std::array<const char*, 5> kFormats = {"obj", "stl", "off", "ply", "gts"};
 
 std::string format(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   if (!extension.empty()) extension.erase(0, 1);
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
   if (std::find(kFormats.begin(), kFormats.end(), extension) == kFormats.end())
-    throw std::invalid_argument(path + ": unknown mesh format '" + extension + "'; use .obj, .stl, .off or .ply");
+    throw std::invalid_argument(path + ": unknown mesh format '" + extension +
+                                "'; use .obj, .stl, .off, .ply or .gts");
   return extension;
 }
 
@@ -185,19 +187,12 @@ bool readOff(std::istream& in, std::uintmax_t fileSize, std::vector<Point>& poin
   return !in.fail();
 }
 
-}  // namespace
-
-TriangleSurface readMeshFile(const std::string& path, Real scale) {
-  if (!(std::isfinite(scale) && scale > 0))
-    throw std::invalid_argument("scale must be positive and finite, got " + std::to_string(scale));
-  const std::string kind = format(path);
+// OBJ, STL, OFF or PLY through CGAL's readers (with the checks above), unscaled and not yet repaired.
+PolygonSoup readWithCgal(const std::string& path, const std::string& kind) {
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) throw FileNotFound(path + ": no such file");
-  if (std::filesystem::file_size(path, error) == 0) throw std::invalid_argument(path + ": the file is empty");
-
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
-  // CGAL's extension dispatch is case-sensitive; the format was already recognised above.
+  // CGAL's extension dispatch is case-sensitive; readMeshFile has already recognised the format.
   std::ifstream in(path, std::ios::binary);
   bool read = false;
   // CGAL's readers take counts and indices from the file as they stand: a negative count becomes a huge
@@ -222,8 +217,23 @@ TriangleSurface readMeshFile(const std::string& path, Real scale) {
 
   PolygonSoup soup;
   soup.points.reserve(points.size());
-  for (const Point& p : points) soup.points.emplace_back(scale * p.x(), scale * p.y(), scale * p.z());
+  for (const Point& p : points) soup.points.emplace_back(p.x(), p.y(), p.z());
   soup.polygons = std::move(polygons);
+  return soup;
+}
+
+}  // namespace
+
+TriangleSurface readMeshFile(const std::string& path, Real scale) {
+  if (!(std::isfinite(scale) && scale > 0))
+    throw std::invalid_argument("scale must be positive and finite, got " + std::to_string(scale));
+  const std::string kind = format(path);
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) throw FileNotFound(path + ": no such file");
+  if (std::filesystem::file_size(path, error) == 0) throw std::invalid_argument(path + ": the file is empty");
+
+  PolygonSoup soup = kind == "gts" ? readGtsSoup(path) : readWithCgal(path, kind);
+  for (Vector3r& p : soup.points) p *= scale;
   try {
     return repairedSurface(soup);
   } catch (const std::invalid_argument& e) {
@@ -232,7 +242,7 @@ TriangleSurface readMeshFile(const std::string& path, Real scale) {
 }
 
 void writeMeshFile(const std::string& path, const TriangleSurface& surface) {
-  format(path);
+  if (format(path) == "gts") return writeGtsFile(path, surface);
   std::vector<Point> points;
   points.reserve(surface.vertices.size());
   for (const Vector3r& v : surface.vertices) points.emplace_back(v.x(), v.y(), v.z());

@@ -212,11 +212,12 @@ void exposeMesh() {
       "(m, 3) vertex indices counter-clockwise seen from outside. Checked and repaired like a file\n"
       "(see Mesh.load).\n") + kRadiusDoc;
   const std::string loadDoc = std::string(
-      "Mesh.load(path, scale=1.0, radius=None, max_radius=None): reads OBJ, STL (ASCII or binary), OFF or PLY,\n"
-      "multiplies coordinates by scale (0.001 for millimetres). Duplicate vertices are welded, faces with more\n"
-      "than 3 corners triangulated and an inside-out surface reversed; a surface that is not closed,\n"
-      "edge-manifold and consistently oriented, has degenerate triangles, non-finite coordinates or no volume\n"
-      "raises ValueError naming the file, the defect and where it is.\n") + kRadiusDoc;
+      "Mesh.load(path, scale=1.0, radius=None, max_radius=None): reads OBJ, STL (ASCII or binary), OFF, PLY or\n"
+      "GTS (GNU Triangulated Surface, as yade.ymport.gts reads it) by the extension, and multiplies coordinates\n"
+      "by scale (0.001 for millimetres). Duplicate vertices are welded, faces with more than 3 corners\n"
+      "triangulated and an inside-out surface reversed; a surface that is not closed, edge-manifold and\n"
+      "consistently oriented, has degenerate triangles, non-finite coordinates or no volume raises ValueError\n"
+      "naming the file, the defect and where it is (in a malformed GTS file, the line).\n") + kRadiusDoc;
   bp::class_<BodyMesh, MeshPtr>(
       "Mesh",
       "A closed triangulated rounded body shape, stored in its principal frame (centre of mass at the origin,\n"
@@ -233,8 +234,9 @@ void exposeMesh() {
                        bp::arg("max_radius") = bp::object()), loadDoc.c_str())
       .staticmethod("load")
       .def("save", &save, (bp::arg("path")),
-           "Writes the (repaired) surface, in the frame it was given in, as OBJ, STL, OFF or PLY by the path's\n"
-           "extension. STL keeps single precision; the others read back exactly.")
+           "Writes the (repaired) surface, in the frame it was given in, as OBJ, STL, OFF, PLY or GTS by the path's\n"
+           "extension. STL keeps single precision; the others read back exactly. GTS files are read by YADE\n"
+           "(yade.ymport.gts, pack.inGtsSurface) with the same outward orientation.")
       .def("icosphere", &makeIcosphere,
            (bp::arg("radius"), bp::arg("subdivisions"), bp::arg("distortion") = 0.0, bp::arg("seed") = 0,
             bp::arg("curvature") = "exact"),

@@ -80,6 +80,35 @@ def write_ply(name, vertices, faces, binary):
             f.writelines(f"{len(face)} {' '.join(str(i) for i in face)}\n".encode() for face in faces)
 
 
+def write_gts(name, vertices, faces, comment="octahedron", order=None, after=""):
+    """GTS (GNU Triangulated Surface): the counts, the vertices, the edges (1-based vertex numbers) and the faces
+    (1-based edge numbers). A face's corners are met by walking its edges in the order listed (the corner the
+    first two share is the second), counter-clockwise seen from outside, as libgts has it. Faces start at different
+    edges and the edges run either way, so that a reader must follow the walk, not the edges' own directions.
+    `order` edits the list of lines (for broken files); `after` is appended to the file."""
+    edges, numbers, lines = [], {}, []
+    for f, face in enumerate(faces):
+        walk = []
+        for k in range(3):
+            a, b = face[k], face[(k + 1) % 3]
+            key = (min(a, b), max(a, b))
+            if key not in numbers:
+                numbers[key] = len(edges)
+                edges.append(key if (len(edges) % 2 == 0) else key[::-1])
+            walk.append(numbers[key] + 1)
+        start = f % 3
+        lines.append(walk[start:] + walk[:start])
+    text = [f"# {comment}, written by tests/data/make_meshes.py",
+            f"{len(vertices)} {len(edges)} {len(lines)} GtsSurface GtsFace GtsEdge GtsVertex"]
+    text += [" ".join(number(c) for c in v) for v in vertices]
+    text += ["", "# edges"] + [f"{a + 1} {b + 1}" for a, b in edges]
+    text += ["# faces"] + [" ".join(str(e) for e in walk) for walk in lines]
+    if order is not None:
+        text = order(text)
+    with open(path(name), "w") as f:
+        f.write("\n".join(text) + "\n" + after)
+
+
 def main():
     # Good: the same octahedron in every format.
     write_obj("octahedron.obj", VERTICES, TRIANGLES)
@@ -91,6 +120,7 @@ def main():
         f.write(binary_stl(VERTICES, TRIANGLES, header=b"solid octahedron, but binary"))
     write_ply("octahedron_ascii.ply", VERTICES, TRIANGLES, binary=False)
     write_ply("octahedron_binary.ply", VERTICES, TRIANGLES, binary=True)
+    write_gts("octahedron.gts", VERTICES, TRIANGLES)
 
     # Repaired silently.
     each_own = np.array([VERTICES[i] for face in TRIANGLES for i in face])
@@ -130,6 +160,16 @@ def main():
         f.write(binary_stl(VERTICES, TRIANGLES)[:84 + 3 * 50 + 20])
     with open(path("not_a_mesh.off"), "w") as f:
         f.write("This is a text file, not a mesh.\n")
+    # GTS files our own parser refuses, naming the line (pkg/io/GtsFile.cpp); also the seeds of gts_reader_fuzzer.
+    write_gts("truncated.gts", VERTICES, TRIANGLES, "octahedron, the last two faces cut off", lambda t: t[:-2])
+    write_gts("trailing_data.gts", VERTICES, TRIANGLES, "octahedron, with a line after its last face",
+              after="1 2 3\n")
+    write_gts("edge_out_of_range.gts", VERTICES, TRIANGLES, "octahedron whose edge 4 starts at vertex 7 of 6",
+              lambda t: t[:13] + ["7 " + t[13].split()[1]] + t[14:])
+    write_gts("degenerate_edge.gts", VERTICES, TRIANGLES, "octahedron whose edge 2 joins vertex 3 to itself",
+              lambda t: t[:11] + ["3 3"] + t[12:])
+    write_gts("unclosed_face.gts", VERTICES, TRIANGLES, "octahedron whose face 4 has its first edge twice",
+              lambda t: t[:-5] + [t[-5].split()[0] + " " + t[-5].split()[0] + " " + t[-5].split()[2]] + t[-4:])
 
 
 if __name__ == "__main__":

@@ -12,7 +12,9 @@ import roundedmesh as rm
 
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "data")
 GOOD = ["octahedron.obj", "octahedron.off", "octahedron_ascii.stl", "octahedron_binary.stl",
-        "octahedron_binary_solid_header.stl", "octahedron_ascii.ply", "octahedron_binary.ply"]
+        "octahedron_binary_solid_header.stl", "octahedron_ascii.ply", "octahedron_binary.ply", "octahedron.gts"]
+# Debian's yade package installs YADE's examples, among them the GTS horse of examples/gts-horse.
+YADE_HORSE = "/usr/share/doc/yade/examples/gts-horse/horse.coarse.gts"
 
 
 def data(name):
@@ -98,6 +100,13 @@ def test_quads_are_triangulated():
     ("empty.stl", r"empty\.stl: the file is empty"),
     ("truncated.stl", r"truncated\.stl: cannot be read as stl \(truncated, corrupt"),
     ("not_a_mesh.off", r"not_a_mesh\.off: cannot be read as off"),
+    # GTS is read by our own parser, which names the line.
+    ("truncated.gts", r"truncated\.gts: line 29: the file ends after 6 of the 8 faces that its first line declares"),
+    ("trailing_data.gts", r"trailing_data\.gts: line 32: unexpected '1' after the 8 faces"),
+    ("edge_out_of_range.gts", r"edge_out_of_range\.gts: line 14: edge 4: '7' is not a vertex number from 1 to 6"),
+    ("degenerate_edge.gts", r"degenerate_edge\.gts: line 12: edge 2 joins vertex 3 to itself"),
+    ("unclosed_face.gts", r"unclosed_face\.gts: line 27: face 4's edges 8 \(vertices 4, 1\), 8 \(vertices 4, 1\) and 7 "
+                          r"\(vertices 4, 5\) do not close into a triangle"),
 ])
 def test_defects_are_named_with_the_file_and_the_place(name, message):
     with pytest.raises(ValueError, match=message):
@@ -107,13 +116,14 @@ def test_defects_are_named_with_the_file_and_the_place(name, message):
 def test_missing_files_and_unknown_formats():
     with pytest.raises(FileNotFoundError, match="nowhere.stl: no such file"):
         rm.Mesh.load(data("nowhere.stl"))
-    with pytest.raises(ValueError, match=r"shape\.xyz: unknown mesh format 'xyz'; use \.obj, \.stl, \.off or \.ply"):
+    with pytest.raises(ValueError, match=r"shape\.xyz: unknown mesh format 'xyz'; use \.obj, \.stl, \.off, \.ply "
+                                         r"or \.gts"):
         rm.Mesh.load("shape.xyz")
 
 
-# Save writes the repaired surface in the frame it was given in; OBJ, OFF and PLY read back exactly, STL to
+# Save writes the repaired surface in the frame it was given in; OBJ, OFF, PLY and GTS read back exactly, STL to
 # single precision.
-@pytest.mark.parametrize("extension, tolerance", [("obj", 0), ("off", 0), ("ply", 0), ("stl", 1e-7)])
+@pytest.mark.parametrize("extension, tolerance", [("obj", 0), ("off", 0), ("ply", 0), ("gts", 0), ("stl", 1e-7)])
 def test_save_and_load_round_trip(tmp_path, extension, tolerance):
     octahedron = rm.Mesh.load(data("octahedron.obj"))
     quarter_turn = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]])
@@ -156,3 +166,51 @@ def test_a_gummy_bear_survives_binary_stl(tmp_path):
     assert again.vertices.shape == bear.vertices.shape and again.triangles.shape == bear.triangles.shape
     assert again.volume == pytest.approx(bear.volume, rel=1e-6)
     np.testing.assert_allclose(np.sort(again.curvatures), np.sort(bear.curvatures), rtol=1e-3, atol=1e-3)
+
+
+def yade_gts():
+    """YADE's gts module (libgts through pygts), which yade.ymport.gts and pack.inGtsSurface use."""
+    return pytest.importorskip("gts", reason="YADE's gts module is not installed")
+
+
+# YADE reads what Mesh.save writes as GTS, turned the same way: libgts finds the surface closed and orientable, with
+# the volume we have (positive: outward), every face's normal pointing out, and the centre inside.
+@pytest.mark.parametrize("mesh", [lambda: rm.Mesh.icosphere(0.01, 2), lambda: rm.Mesh.load(data("octahedron.obj"))])
+def test_yade_reads_the_gts_we_write(tmp_path, mesh):
+    gts = yade_gts()
+    from yade import pack, ymport
+    mesh = mesh()
+    target = str(tmp_path / "saved.gts")
+    mesh.save(target)
+    facets = ymport.gts(target)  # libgts reads it without a word
+    # YADE 2023.02's ymport.gts makes the facets but does not return them: the checks read the file as it does.
+    assert facets is None or len(facets) == len(mesh.triangles)
+    with open(target) as f:
+        surface = gts.read(f)
+    assert surface.is_closed() and surface.is_orientable() and surface.is_manifold()
+    assert (surface.Nvertices, surface.Nfaces) == (len(mesh.vertices), len(mesh.triangles))
+    assert surface.volume() == pytest.approx(mesh.volume, rel=1e-13)
+    centre = np.array(mesh.centroid)
+    for face in surface.faces():
+        corners = np.array([vertex.coords() for vertex in face.vertices()])
+        assert np.dot(face.normal(), corners.mean(axis=0) - centre) > 0  # the meshes are convex
+    inside = pack.inGtsSurface(surface)
+    assert inside(tuple(centre), 0) and not inside(tuple(centre + [10, 0, 0]), 0)
+    assert len(pack.gtsSurface2Facets(surface)) == len(mesh.triangles)
+
+
+# YADE's GTS horse (examples/gts-horse, written by libgts) loads as it is, outward; saved as GTS and read back by
+# libgts, it has the volume libgts gives the original file.
+def test_yade_horse_loads_and_goes_back_to_yade(tmp_path):
+    if not os.path.exists(YADE_HORSE):
+        pytest.skip(f"{YADE_HORSE} is not installed (Debian's yade package installs YADE's examples)")
+    horse = rm.Mesh.load(YADE_HORSE)
+    assert horse.vertices.shape == (336, 3) and horse.triangles.shape == (668, 3)
+    assert horse.volume == pytest.approx(0.0002634182601804985, rel=1e-12)  # libgts's gts_surface_volume
+    target = str(tmp_path / "horse.gts")
+    horse.save(target)
+    again = rm.Mesh.load(target)
+    np.testing.assert_allclose(input_frame(again), input_frame(horse), rtol=0, atol=1e-15)
+    gts = yade_gts()
+    with open(YADE_HORSE) as original, open(target) as saved:
+        assert gts.read(saved).volume() == pytest.approx(gts.read(original).volume(), rel=1e-12)
