@@ -185,6 +185,8 @@ def main(argv):
                         help="nodes of the roundedmesh meshes (Mesh.reference_shape; default its own)")
     parser.add_argument("--regime", default="auto", choices=("auto", "quadrature", "direct", "exact"),
                         help="roundedmesh's pressure integration (roundedmesh.engine)")
+    parser.add_argument("--normal", default="pressure", choices=("pressure", "energy"),
+                        help="roundedmesh's normal law (roundedmesh.engine)")
     parser.add_argument("--count", type=int, default=40, help="spheres per clump")
     parser.add_argument("--spacing", type=float, default=1e-3, help="level-set grid spacing [m]")
     parser.add_argument("--surface-nodes", type=int, default=511, help="level-set boundary nodes asked for")
@@ -213,8 +215,9 @@ def main(argv):
     level_set_options = {} if args.level_set_verlet is None else {"verlet_distance": args.level_set_verlet}
     builders = {
         "roundedmesh": (f"roundedmesh, {args.shape} meshes of {args.nodes or 'the default'} nodes, "
-                        f"regime {args.regime}",
-                        lambda: peers.build_rounded(poses, args.shape, args.nodes, regime=args.regime)),
+                        f"regime {args.regime}, normal {args.normal}",
+                        lambda: peers.build_rounded(poses, args.shape, args.nodes, regime=args.regime,
+                                                    normal=args.normal)),
         "roundedmesh-principal": (f"roundedmesh, principal curvatures, regime {args.regime}",
                                   lambda: peers.build_rounded(poses, args.shape, args.nodes, regime=args.regime,
                                                               curvature="principal")),
