@@ -50,3 +50,18 @@ def test_the_coarse_meshes_and_the_report(tmp_path):
     assert os.path.getsize(tmp_path / "hard_cases.png") > 1000
     args = hard_cases.parse(["--quick"])
     assert (args.only, args.shapes, args.seeds, args.threads) == (["s1"], ["gummy_bear"], [1], 2)
+
+
+def test_the_reference_gummy_bear_passes_the_coarse_mesh_checks(tmp_path, monkeypatch):
+    """The coarse-mesh checks can be passed: the 554-node gummy bear of the reference shapes feels no force 1 mm from
+    a Wall, a Box and a Facet, and dropped 1 mm onto each comes to rest on it (0.23 mm deep, 1.8 mm/s on a Wall after
+    2 s)."""
+    import argparse
+    import roundedmesh as rm
+    spec = importlib.util.spec_from_file_location("hard_cases", SCRIPT)
+    hard_cases = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(hard_cases)
+    monkeypatch.setattr(hard_cases, "coarse_meshes", lambda: {"bear": rm.Mesh.reference_shape("gummy_bear")})
+    report = hard_cases.Report()
+    hard_cases.coarse_checks(argparse.Namespace(), report)
+    assert len(report.rows) == 6 and all(r["passed"] for r in report.rows), report.rows
