@@ -8,21 +8,14 @@
 
 #include "fuzz/SoupFormat.hpp"
 #include "pkg/io/MeshFile.hpp"
+#include "tests/cpp/TestSupport.hpp"
 
 namespace roundedmesh {
 namespace {
 
 const std::string kData = ROUNDEDMESH_TEST_DATA "/fuzz/";
 
-template <class Read>
-std::string refusal(Read read) {
-  try {
-    read();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "accepted";
-}
+using test::refusal;
 
 // obj_reader_fuzzer: a closed, consistently oriented surface that passes through itself, with a positive
 // volume but negative principal moments of inertia. It used to become a body with negative moments.

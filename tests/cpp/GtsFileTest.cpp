@@ -16,6 +16,7 @@
 #include "pkg/io/GtsFile.hpp"
 #include "pkg/io/MeshFile.hpp"
 #include "pkg/shape/Icosphere.hpp"
+#include "tests/cpp/TestSupport.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -60,15 +61,7 @@ std::string contents(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-template <class Read>
-std::string refusal(Read read) {
-  try {
-    read();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "accepted";
-}
+using test::refusal;
 
 // The unit right tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1), volume 1/6: the base the refusals change.
 // Edges 12, 23, 31, 14, 24, 34; faces 132, 124, 143, 234 counter-clockwise seen from outside.

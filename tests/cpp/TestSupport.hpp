@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "pkg/engine/BodyState.hpp"
@@ -13,6 +15,17 @@
 #include "pkg/shape/TriangleSurface.hpp"
 
 namespace roundedmesh::test {
+
+// The message of the std::invalid_argument that `read` throws, or "accepted" if it throws none.
+template <class Read>
+std::string refusal(Read read) {
+  try {
+    read();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "accepted";
+}
 
 // Torus with tube radius r around a circle of radius R in the xy plane: a regular (u, v) grid, each quad
 // split in two. v = 0 on the outer equator. Principal curvatures 1/r around the tube and cos v / (R + r cos v)
