@@ -21,12 +21,16 @@ struct EdgeTerms {
   Real cone1, cone2, p3;
 };
 
+Real arcOf(Real A, Real s) { return std::asin(std::clamp(s / std::sqrt(A), Real(-1), Real(1))); }
+
+Real p3(Real A, Real s, Real w, Real arc) { return s / 8 * (5 * A - 2 * s * s) * w + 3 * A * A / 8 * arc; }
+
 EdgeTerms edgeTerms(Real a, Real h, Real A, Real s, Real w) {
-  const Real arc = std::asin(std::clamp(s / std::sqrt(A), Real(-1), Real(1)));
+  const Real arc = arcOf(A, s);
   const Real sign = h > 0 ? 1 : h < 0 ? -1 : 0;
   const Real cone1 = a * a * a * sign * std::atan2(a * s, std::abs(h) * w) - h * (a * a + A / 2) * arc - h * s * w / 2;
-  const Real p3 = s / 8 * (5 * A - 2 * s * s) * w + 3 * A * A / 8 * arc;
-  return {cone1, a * a * cone1 - h * p3, p3};
+  const Real along = p3(A, s, w, arc);
+  return {cone1, a * a * cone1 - h * along, along};
 }
 
 // The triangle (origin, p, q) cut by the disc, signed: adds to `sum`.
@@ -88,7 +92,9 @@ SegmentIntegrals segmentIntegrals(Real radius, const Vector2r& A, const Vector2r
   if (!(s1 > s0)) return sum;
   auto w = [&](Real s) { return std::sqrt(std::max((halfChord - s) * (halfChord + s), Real(0))); };
   const Real w0 = s0 == -halfChord ? 0 : w(s0), w1 = s1 == halfChord ? 0 : w(s1);
-  sum.energy = edgeTerms(radius, h, chordSq, s1, w1).p3 - edgeTerms(radius, h, chordSq, s0, w0).p3;
+  // At the circle's crossings the arc is -+pi/2 exactly (w = 0 there).
+  const Real arc0 = w0 == 0 ? -M_PI / 2 : arcOf(chordSq, s0), arc1 = w1 == 0 ? M_PI / 2 : arcOf(chordSq, s1);
+  sum.energy = p3(chordSq, s1, w1, arc1) - p3(chordSq, s0, w0, arc0);
   // integral of s w^3 ds = -w^5 / 5; l = (s - along) / length.
   const Real sMoment = (std::pow(w0, 5) - std::pow(w1, 5)) / 5;
   sum.energyMoment = (sMoment - along * sum.energy) / length;

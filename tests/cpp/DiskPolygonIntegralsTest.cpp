@@ -134,5 +134,31 @@ TEST(DiskPolygonIntegrals, MatchNumericalIntegration) {
   }
 }
 
+// Along a segment, clipped to [l0, l1] and to the disc: the integrals of w^3 ds and l w^3 ds against tanh-sinh
+// quadrature over the clipped part (1e-12 of a^4: both exact to round-off there).
+TEST(DiskPolygonIntegrals, SegmentIntegralsMatchNumericalIntegration) {
+  const Real a = 1.3;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<Real> corner(-2, 2), fraction(0, 1);
+  for (int n = 0; n < 40; ++n) {
+    const Vector2r A(corner(random), corner(random)), B(corner(random), corner(random));
+    Real l0 = n % 3 ? fraction(random) * 0.5 : 0, l1 = n % 4 ? 0.5 + fraction(random) * 0.5 : 1;
+    const SegmentIntegrals exact = segmentIntegrals(a, A, B, l0, l1);
+    // The clipped part: where |A + l (B - A)| < a.
+    const Vector2r d = B - A;
+    const Real qa = d.squaredNorm(), qb = A.dot(d), qc = A.squaredNorm() - a * a, D = qb * qb - qa * qc;
+    Four sum = Four::Zero();
+    if (D > 0) {
+      const Real lo = std::max(l0, (-qb - std::sqrt(D)) / qa), hi = std::min(l1, (-qb + std::sqrt(D)) / qa);
+      sum = tanhSinh([&](Real l) {
+        const Real w = std::sqrt(std::max(a * a - (A + l * d).squaredNorm(), Real(0)));
+        return Four(w * w * w, l * w * w * w, 0, 0);
+      }, lo, hi) * d.norm();
+    }
+    EXPECT_NEAR(exact.energy, sum[0], 1e-12 * std::pow(a, 4)) << n;
+    EXPECT_NEAR(exact.energyMoment, sum[1], 1e-12 * std::pow(a, 4)) << n;
+  }
+}
+
 }  // namespace
 }  // namespace roundedmesh
