@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace roundedmesh {
 namespace {
@@ -26,32 +27,65 @@ Real crossing(const Vector3r& from, const Vector3r& to, const Vector3r& a, const
 
 }  // namespace
 
-bool pathInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x) {
+namespace {
+
+struct Crossing {
+  Real at;  // along the path, in (0, 1]
+  int triangle;
+};
+
+// Where the path from `from`, a point of triangle s, to x crosses the mesh's flat surface (each triangle but s whose
+// box meets the path's, tested exactly), in order along it.
+std::vector<Crossing> crossings(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x, Vector3r& a,
+                                Vector3r& b) {
   // `from` is often a corner of s (c_eff is often a corner of S): start within s instead, as far from the corner as
   // round-off could blur (1e-6 of the way to its centroid), so that the path starts on s alone, then runs parallel.
   const Triangle& own = mesh.triangles()[s];
   const Vector3r centroid = (mesh.vertices()[own[0]] + mesh.vertices()[own[1]] + mesh.vertices()[own[2]]) / 3;
   const Vector3r shift = 1e-6 * (centroid - from);
-  const Vector3r a = from + shift, b = x + shift;
+  a = from + shift;
+  b = x + shift;
   const AlignedBox3r path = AlignedBox3r(a.cwiseMin(b), a.cwiseMax(b));
-  int crossings = 0, last = -1;
-  Real lastAt = 0;
+  std::vector<Crossing> found;
   mesh.tree().query([&](const AlignedBox3r& box) { return box.intersects(path); }, [&](int t) {
     if (t == s) return;
     const Triangle& corners = mesh.triangles()[t];
     const Real at = crossing(a, b, mesh.vertices()[corners[0]], mesh.vertices()[corners[1]], mesh.vertices()[corners[2]]);
-    if (at < 0) return;
-    ++crossings;
-    if (at > lastAt) {
-      lastAt = at;
-      last = t;
-    }
+    if (at >= 0) found.push_back({at, t});
   });
-  if (crossings % 2 == 0) return true;
-  // Out of the flat solid through triangle `last`: still in the rounded one if within its cap (the lens of its
-  // sphere beyond its plane).
-  const RoundedTriangle& exit = mesh.rounded(last);
-  return (x - exit.sphereCentre).squaredNorm() <= exit.radius * exit.radius;
+  std::sort(found.begin(), found.end(), [](const Crossing& p, const Crossing& q) { return p.at < q.at; });
+  return found;
+}
+
+bool inCap(const RoundedMesh& mesh, int t, const Vector3r& x) {
+  const RoundedTriangle& cap = mesh.rounded(t);
+  return (x - cap.sphereCentre).squaredNorm() <= cap.radius * cap.radius;
+}
+
+}  // namespace
+
+bool pathInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x) {
+  Vector3r a, b;
+  const std::vector<Crossing> found = crossings(mesh, s, from, x, a, b);
+  // Out of the flat solid through the last triangle crossed: still in the rounded one if within its cap (the lens
+  // of its sphere beyond its plane).
+  return found.size() % 2 == 0 || inCap(mesh, found.back().triangle, x);
+}
+
+bool pathStaysInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x) {
+  Vector3r a, b;
+  const std::vector<Crossing> found = crossings(mesh, s, from, x, a, b);
+  // Each stretch out of the flat solid, from a crossing out to the next one in (or to x), must lie in the cap of the
+  // triangle it left through or of the one it comes back through (a ball holds a segment whose ends it holds).
+  for (size_t k = 0; k < found.size(); k += 2) {
+    const Vector3r out = a + found[k].at * (b - a);
+    const bool back = k + 1 < found.size();
+    const Vector3r in = back ? Vector3r(a + found[k + 1].at * (b - a)) : x;
+    const int left = found[k].triangle, entered = back ? found[k + 1].triangle : left;
+    if (!(inCap(mesh, left, out) && inCap(mesh, left, in)) && !(inCap(mesh, entered, out) && inCap(mesh, entered, in)))
+      return false;
+  }
+  return true;
 }
 
 bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom) {
@@ -63,8 +97,27 @@ bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2,
   const Real hSq = lateral.squaredNorm();
   const Vector3r q1 = p.sphereCentre + lateral + std::sqrt(std::max(p.radius * p.radius - hSq, Real(0))) * geom.normal;
   const Vector3r q2 = sphere2 + lateral - std::sqrt(std::max(q.radius * q.radius - hSq, Real(0))) * geom.normal;
-  const Vector3r middle = 0.5 * (q1 + q2);
-  return insidePlaced(body2, q1) && insidePlaced(body2, middle) && insideRoundedSolid(mesh1, q2) && insideRoundedSolid(mesh1, middle);
+  if (!insidePlaced(body2, q1) || !insideRoundedSolid(mesh1, q2)) return false;
+  // Between its ends, the segment is sampled no farther apart than the finer field's tolerance: three points (the
+  // ends and the middle) let a segment run out of one body and back in, along a thin sheet where two bodies overlap
+  // by 3 mm, and score 33 mm (two gummy bears side by side in S1).
+  const Real spacing = std::min(mesh1.solidDistance().tolerance(), body2.mesh.solidDistance().tolerance());
+  const int samples = static_cast<int>(std::ceil((q1 - q2).norm() / spacing));
+  for (int k = 1; k < samples; ++k) {
+    const Vector3r x = q1 + (q2 - q1) * (Real(k) / samples);
+    if (!insidePlaced(body2, x) || !insideRoundedSolid(mesh1, x)) return false;
+  }
+  // The fields cannot see a gap narrower than twice their tolerance: a segment that long is followed through both
+  // flat surfaces exactly, from where it crosses its own triangle.
+  const Real blind = 2 * std::max(mesh1.maxCapHeight() + mesh1.solidDistance().tolerance(),
+                                  body2.mesh.maxCapHeight() + body2.mesh.solidDistance().tolerance());
+  if ((q1 - q2).norm() <= blind) return true;
+  const Vector3r line = planePoint(geom, geom.effectivePoint);
+  const Matrix3r back = body2.rotation.transpose();
+  const Vector3r line2 = back * (line - body2.translation), normal2 = back * geom.normal;
+  return pathStaysInsideBody(mesh1, s, line + lineToTriangle(mesh1, s, line, geom.normal) * geom.normal, q2) &&
+         pathStaysInsideBody(body2.mesh, t, line2 + lineToTriangle(body2.mesh, t, line2, normal2) * normal2,
+                             back * (q1 - body2.translation));
 }
 
 }  // namespace roundedmesh

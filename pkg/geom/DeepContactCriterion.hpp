@@ -4,10 +4,13 @@
 // centimetres where the bodies overlap by a millimetre, or not at all. At a real contact, however deep, the
 // surface points on the line along n12 through c_eff, q1 on cap 1 and q2 on cap 2 (|q1 - q2| = delta_eff), bound
 // a segment that lies inside both bodies: from q2 the line enters body 2, from q1 it enters body 1. So
-//   a triangle pair deeper than `shallow` touches only if q1, q2 and their midpoint lie in both bodies' solids,
-// each point tested against the other body's distance field (SolidDistance.hpp): within its tallest cap
+//   a triangle pair deeper than `shallow` touches only if the segment q1 q2 lies in both bodies' solids, tested
+// at its ends and at points no farther apart than the fields' tolerance between them, each point against the
+// other body's distance field (SolidDistance.hpp, and its own between the ends): within its tallest cap
 // (points of the rounded solid lie that close to the flat one) plus the field's tolerance. Shallow pairs are left
-// to Appendix B: the false pairs are as deep as bodies are thick.
+// to Appendix B: the false pairs are as deep as bodies are thick. A field cannot see a gap narrower than twice its
+// tolerance, and two bodies side by side overlap along thin sheets no thicker (3 mm for S1's bears, whose fields'
+// tolerance is about that), so a segment longer than that is then followed through both flat surfaces exactly.
 // The candidate lists use the necessary condition on one triangle of each pair, capReaches (CapReach.hpp).
 #pragma once
 
@@ -23,6 +26,10 @@ namespace roundedmesh {
 // sheet's edge (a lifter ridge in a gummy bear's hollow) is within the field's tolerance of the body, yet the path to
 // it from a limb behind the sheet leaves the bear.
 bool pathInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x);
+
+// Whether that path lies in the rounded solid all the way: each stretch of it outside the flat solid lies within the
+// cap of the triangle it leaves through or comes back through.
+bool pathStaysInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x);
 
 // Where the line x + u d meets the plane of triangle s: u (d not parallel to the plane; for a contact's c_eff and
 // n12, the triangle faces n12, Eq. B.5).

@@ -7,33 +7,49 @@
 namespace roundedmesh {
 namespace {
 
-// dU/du_j of the corners of triangle `own` (plane coordinates about c), its edges clipped to the triangle `other`
-// (if any: S = own n other) and to the disc of radius a.
-std::array<Vector2r, 3> cornerGradients(const std::array<Vector2r, 3>& own, const std::array<Vector2r, 3>* other,
-                                        Real a, Real k) {
-  std::array<Vector2r, 3> g = {Vector2r::Zero(), Vector2r::Zero(), Vector2r::Zero()};
+// The edges of S, each moved outward, as the energy's gradient: an edge on the line of a triangle's edge A B (its
+// own, or the partner triangle's) adds its share to dU/du of A and B, by the distance along A B; any other edge is
+// the partner face's outline (a Facet's or a Box face's), whose corners only the sum of their gradients needs.
+struct EdgeGradients {
+  std::array<Vector2r, 3> own = {Vector2r::Zero(), Vector2r::Zero(), Vector2r::Zero()};
+  std::array<Vector2r, 3> partner = {Vector2r::Zero(), Vector2r::Zero(), Vector2r::Zero()};
+  Vector2r outline = Vector2r::Zero();
+};
+
+// Adds the edge P Q of S (outward normal m) to the corners of `triangle` if it lies on one of its edges.
+bool onTriangleEdge(const std::array<Vector2r, 3>& triangle, const Vector2r& P, const Vector2r& Q, const Vector2r& m,
+                    Real a, Real k, Real tolerance, std::array<Vector2r, 3>& g) {
   for (int e = 0; e < 3; ++e) {
-    const Vector2r &A = own[e], &B = own[(e + 1) % 3], &C = own[(e + 2) % 3];
+    const Vector2r &A = triangle[e], &B = triangle[(e + 1) % 3];
     const Vector2r d = B - A;
-    Vector2r outward = Vector2r(d.y(), -d.x()).normalized();
-    if (outward.dot(C - A) > 0) outward = -outward;
-    Real l0 = 0, l1 = 1;
-    if (other) {
-      // The part of the edge inside the other triangle: (A + l d - q) . inward >= 0 for each of its edges.
-      for (int i = 0; i < 3 && l1 > l0; ++i) {
-        const Vector2r &q = (*other)[i], &r = (*other)[(i + 1) % 3], &opposite = (*other)[(i + 2) % 3];
-        Vector2r inward(r.y() - q.y(), q.x() - r.x());
-        if (inward.dot(opposite - q) < 0) inward = -inward;
-        const Real at = (A - q).dot(inward), rate = d.dot(inward);
-        if (rate > 0) l0 = std::max(l0, -at / rate);
-        else if (rate < 0) l1 = std::min(l1, -at / rate);
-        else if (at < 0) l1 = l0;
-      }
-    }
-    if (!(l1 > l0)) continue;
-    const SegmentIntegrals edge = segmentIntegrals(a, A, B, l0, l1);
-    g[e] += k * (edge.energy - edge.energyMoment) * outward;
-    g[(e + 1) % 3] += k * edge.energyMoment * outward;
+    const Real length = d.norm();
+    auto offLine = [&](const Vector2r& x) { return std::abs(d.x() * (x - A).y() - d.y() * (x - A).x()) / length; };
+    if (!(length > 0) || offLine(P) > tolerance || offLine(Q) > tolerance) continue;
+    const Real lP = (P - A).dot(d) / (length * length), lQ = (Q - A).dot(d) / (length * length);
+    const SegmentIntegrals edge = segmentIntegrals(a, A, B, std::min(lP, lQ), std::max(lP, lQ));
+    g[e] += k * (edge.energy - edge.energyMoment) * m;
+    g[(e + 1) % 3] += k * edge.energyMoment * m;
+    return true;
+  }
+  return false;
+}
+
+EdgeGradients edgeGradients(const PressureGeom& geom, bool partnerTriangle, Real k) {
+  const ConvexPolygon& S = geom.polygon;
+  const Real a = geom.contactRadius;
+  // S's corners on a triangle's edge line come from clipping: off it by round-off of the corners' size.
+  Real size = a;
+  for (const Vector2r& u : geom.nodes) size = std::max(size, u.cwiseAbs().maxCoeff());
+  const Real tolerance = 1e-9 * size;
+  EdgeGradients g;
+  for (int i = 0; i < S.size(); ++i) {
+    const Vector2r &P = S[i], &Q = S[(i + 1) % S.size()];
+    const Vector2r d = Q - P;
+    if (!(d.squaredNorm() > 0)) continue;
+    const Vector2r m = Vector2r(d.y(), -d.x()).normalized();  // outward: S is counter-clockwise
+    if (onTriangleEdge(geom.nodes, P, Q, m, a, k, tolerance, g.own)) continue;
+    if (partnerTriangle && onTriangleEdge(geom.partnerNodes, P, Q, m, a, k, tolerance, g.partner)) continue;
+    g.outline += k * segmentIntegrals(a, P, Q).energy * m;
   }
   return g;
 }
@@ -46,15 +62,16 @@ EnergyForces contactEnergyGradient(const PressureGeom& geom, Real elasticForce, 
   const Vector3r& n = geom.normal;
   auto inSpace = [&](const Vector2r& u) -> Vector3r { return u.x() * geom.tangent1 + u.y() * geom.tangent2; };
   const bool triangle = partner.kind == EnergyPartner::Triangle;
-  const std::array<Vector2r, 3> g1 = cornerGradients(geom.nodes, triangle ? &geom.partnerNodes : nullptr,
-                                                     geom.contactRadius, energyAmplitude);
+  const EdgeGradients g = edgeGradients(geom, triangle, energyAmplitude);
   EnergyForces out;
   if (partner.kind == EnergyPartner::Plane) {
-    Vector3r atSphere = elasticForce * n;
+    // The outline's corners are the partner's: moving s1 in the plane moves c, and so every projected corner, its
+    // own and the outline's alike.
+    Vector3r atSphere = elasticForce * n - inSpace(g.outline);
     for (int j = 0; j < 3; ++j) {
-      const Vector3r g = inSpace(g1[j]);
-      atSphere -= g;
-      out.onBody2[out.count++] = {corners1[j], g};
+      const Vector3r gj = inSpace(g.own[j]);
+      atSphere -= gj;
+      out.onBody2[out.count++] = {corners1[j], gj};
     }
     out.onBody2[out.count++] = {sphere1, atSphere};
     return out;
@@ -62,14 +79,12 @@ EnergyForces contactEnergyGradient(const PressureGeom& geom, Real elasticForce, 
   const Vector3r s12 = partner.sphereCentre - sphere1;
   const Real distance = s12.norm();
   Vector3r turning = Vector3r::Zero();  // sum_j eta_j g_j
-  for (int j = 0; j < 3; ++j) turning += (corners1[j] - sphere1).dot(n) * inSpace(g1[j]);
+  for (int j = 0; j < 3; ++j) turning += (corners1[j] - sphere1).dot(n) * inSpace(g.own[j]);
   if (triangle) {
-    const std::array<Vector2r, 3> g2 =
-        cornerGradients(geom.partnerNodes, &geom.nodes, geom.contactRadius, energyAmplitude);
     for (int j = 0; j < 3; ++j) {
-      const Vector3r g = inSpace(g2[j]);
-      turning += (partner.corners[j] - sphere1).dot(n) * g;
-      out.onBody2[out.count++] = {partner.corners[j], -g};
+      const Vector3r gj = inSpace(g.partner[j]);
+      turning += (partner.corners[j] - sphere1).dot(n) * gj;
+      out.onBody2[out.count++] = {partner.corners[j], -gj};
     }
   }
   out.onBody2[out.count++] = {partner.sphereCentre, elasticForce * n + turning / distance};

@@ -8,10 +8,12 @@
 //     g_j = k m_e integral of (1 - l) w^3 ds (m_e the edge's outward normal, k = 4 E* / (3 pi R*^2));
 //   - the plane turns with n12 = (s2 - s1) / |s2 - s1|, which moves every projected corner: a force at s2 of
 //     sum_j eta_j g_j / |s2 - s1|, eta_j = (X_j - s1) . n12 the corner's height above s1.
+// Each edge of S lies on an edge of P' or Q' (found by its line), or on the outline of a Box's face or a Facet, whose
+// corners are the partner's: their gradients h_k enter only through their sum.
 // So, as forces on body 2 at points (body 1's frame), against a rounded triangle or a sphere: F_el n12 + that sum at s2,
-// and -g_j at each of body 2's corners; against a plane (c the foot of s1): F_el n12 - sum_j g_j at s1 and +g_j at
-// each of body 1's corners. Body 1 receives the opposite forces at the same points. Only the circular contact
-// (curvature 'mean').
+// and -g_j at each of body 2's corners; against a plane, a Box's face or a Facet (c the foot of s1, which carries every
+// projected corner with it): F_el n12 - sum_j g_j - sum_k h_k at s1 and +g_j at each of body 1's corners. Body 1
+// receives the opposite forces at the same points. Only the circular contact (curvature 'mean').
 #pragma once
 
 #include <array>

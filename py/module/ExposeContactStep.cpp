@@ -95,15 +95,6 @@ bp::dict engineOptionChoices() {
   return d;
 }
 
-// The energy law (ContactEnergyGradient.hpp) knows spheres, rounded bodies and infinite planes; a Box's or a
-// Facet's finite face would add the edges of its outline, not done yet.
-void requireEnergyPartner(const PartnerShape& shape, int id) {
-  if (std::holds_alternative<Box>(shape) || std::holds_alternative<Facet>(shape))
-    throw std::invalid_argument(std::string("normal='energy' does not take ") +
-                                (std::holds_alternative<Box>(shape) ? "Box" : "Facet") + " partners yet (body " +
-                                std::to_string(id) + "): Walls, Spheres and rounded bodies only");
-}
-
 bp::tuple asTuple(const StabilityLimit& limit, int bodyId, int otherId) {
   return bp::make_tuple(limit.timeStep, bodyId, otherId, limit.tangential);
 }
@@ -129,8 +120,6 @@ class SceneContacts {
     if (!(stopOverlap > 0))
       throw std::invalid_argument("stop_overlap must be positive (math.inf: never), got " + std::to_string(stopOverlap));
     const PressureOptions pressure = pressureOptions(gamma, regime, curvature, normal);
-    if (pressure.normal == NormalLaw::Energy)
-      for (const Partner& p : model_.partners) requireEnergyPartner(p.shape, p.id);
     model_.pressure = pressure;
     model_.friction = frictionLaw(friction);
     model_.stopOverlap = stopOverlap;
@@ -448,7 +437,6 @@ bp::tuple partnerContact(const BodyMesh& mesh, const Vector3r& pos, const Quater
                          const std::string& friction, const std::string& curvature, const std::string& normal) {
   const int id = bp::extract<int>(partner.attr("id"));
   const PartnerShape shape = yadeShape(partner, id);
-  if (normal == nameOf(kNormalLaws, NormalLaw::Energy)) requireEnergyPartner(shape, id);
   const bp::object s = partner.attr("state");
   BodyState partnerState;
   partnerState.position = bp::extract<Vector3r>(s.attr("pos"));

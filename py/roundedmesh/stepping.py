@@ -49,8 +49,7 @@ def engine(label="", **options):
       normal       -- 'pressure' (default): each triangle contact's elastic force is its integrated pressure at its
                       centre of pressure (Eq. 15, the paper's); 'energy': the exact gradient of the contacts' energy,
                       the energy density integrated over each S n Omega, so that the elastic force does no work
-                      round a closed path (doc/physics.md, "The energy law"); curvature 'mean', and Walls, Spheres
-                      and rounded bodies as partners (not yet Boxes and Facets)
+                      round a closed path (doc/physics.md, "The energy law"); curvature 'mean', every partner
     A body whose centre passes through a Wall, Facet or Box it was near in the step before stops the run too
     (doc/user-guide.md, "Choosing the time step").
     """

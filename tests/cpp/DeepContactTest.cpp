@@ -174,5 +174,37 @@ TEST(DeepContact, FarPairsOfTheS1PackingAreRejected) {
   EXPECT_EQ(static_cast<int>(criterion.size()), shallowOnes);
 }
 
+// Two pairs of S1's gummy bears (seed 1, two threads) lying side by side, their vertices at most 2.5 and 2.0 mm inside
+// each other (a winding-number test of every vertex against the other mesh); with only the ends and the middle of
+// the segment q1 q2 tested, one triangle pair of each scored 32.7 and 19.2 mm (a segment that leaves one bear and
+// comes back, through a gap of 5.3 and 3 mm), and the run stopped on "0.52 r_eq" and "0.51 r_eq" at steps 4494 and
+// 4935. The criterion now keeps no contact deeper than the vertices' 2.5 mm plus 1 mm for what lies between
+// vertices (caps, the chords' sag), and the lists still find every contact brute force finds.
+TEST(DeepContact, SideBySideBearsOfS1HaveNoCentimetreContact) {
+  const RecordedScene scene = loadRecordedScene();
+  ContactModel model;
+  model.bodies = {scene.model.bodies[0], scene.model.bodies[1]};
+  ContactData data;
+  data.resize(model);
+  const std::array<std::array<BodyState, 2>, 2> poses = {{
+      {test::at({-0.07168334681534319, 0.0838630128869126, 0.04693817159151298},
+                Quaternionr(0.19110487156194667, -0.2709518536020508, -0.8698647092164629, -0.3652388379604)),
+       test::at({-0.06399666232101657, 0.06302885662549633, 0.07393671826412465},
+                Quaternionr(0.8005960260449404, -0.01542677056204282, -0.04896545726620175, 0.5970011740572937))},
+      {test::at({-0.13942407847656885, -0.0049552037578006036, 0.08439615187926382},
+                Quaternionr(-0.318571452506521, 0.6406155699362295, -0.4813407675900291, -0.5063941021171227)),
+       test::at({-0.08285439899438186, -0.0286472066664182, 0.08519864893516915},
+                Quaternionr(0.9835518481708703, -0.00728294520262969, -0.12886906937348622, -0.12635459480229658))},
+  }};
+  for (const auto& pose : poses) {
+    data.bodyStates = {pose[0], pose[1]};
+    Real appendixB = 0;
+    for (const PressureGeom& g : bruteForce(model, data, std::numeric_limits<Real>::infinity()))
+      appendixB = std::max(appendixB, g.effectiveOverlap);
+    EXPECT_GT(appendixB, 0.015);
+    EXPECT_LT(expectBruteForceContacts(model, data, "side by side"), 0.0035);
+  }
+}
+
 }  // namespace
 }  // namespace roundedmesh
