@@ -7,6 +7,7 @@
 
 #include <random>
 #include <set>
+#include <utility>
 
 #include "bench/RecordedScene.hpp"
 #include "pkg/engine/PairGeometry.hpp"
@@ -150,15 +151,21 @@ TEST(DeepContact, GummyBearsPressedToHalfARadiusLoseNoPair) {
   }
 }
 
+// Two gummy bears of the recorded S1 packing (its mesh and material), states to be set.
+std::pair<ContactModel, ContactData> twoBears(const RecordedScene& scene) {
+  ContactModel model;
+  model.bodies = {scene.model.bodies[0], scene.model.bodies[1]};
+  ContactData data;
+  data.resize(model);
+  return {model, data};
+}
+
 // In the recorded S1 packing, Appendix B alone accepts triangle pairs of bears 0 and 1 (whose real contacts are
 // at most 1.5 mm deep) with effective overlaps above 15 mm; the criterion rejects every pair deeper than
 // 0.1 r_eq there and keeps every shallower one.
 TEST(DeepContact, FarPairsOfTheS1PackingAreRejected) {
   const RecordedScene scene = loadRecordedScene();
-  ContactModel model;
-  model.bodies = {scene.model.bodies[0], scene.model.bodies[1]};
-  ContactData data;
-  data.resize(model);
+  auto [model, data] = twoBears(scene);
   data.bodyStates = {scene.shaking[59][0], scene.shaking[59][1]};
   const std::vector<PressureGeom> appendixB = bruteForce(model, data, std::numeric_limits<Real>::infinity());
   const std::vector<PressureGeom> criterion = bruteForce(model, data, shallow(model));
@@ -181,11 +188,7 @@ TEST(DeepContact, FarPairsOfTheS1PackingAreRejected) {
 // 4935. The criterion now keeps no contact deeper than the vertices' 2.5 mm plus 1 mm for what lies between
 // vertices (caps, the chords' sag), and the lists still find every contact brute force finds.
 TEST(DeepContact, SideBySideBearsOfS1HaveNoCentimetreContact) {
-  const RecordedScene scene = loadRecordedScene();
-  ContactModel model;
-  model.bodies = {scene.model.bodies[0], scene.model.bodies[1]};
-  ContactData data;
-  data.resize(model);
+  auto [model, data] = twoBears(loadRecordedScene());
   const std::array<std::array<BodyState, 2>, 2> poses = {{
       {test::at({-0.07168334681534319, 0.0838630128869126, 0.04693817159151298},
                 Quaternionr(0.19110487156194667, -0.2709518536020508, -0.8698647092164629, -0.3652388379604)),
