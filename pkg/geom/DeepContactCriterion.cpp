@@ -35,9 +35,9 @@ struct Crossing {
 };
 
 // Where the path from `from`, a point of triangle s, to x crosses the mesh's flat surface (each triangle but s whose
-// box meets the path's, tested exactly), in order along it.
-std::vector<Crossing> crossings(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x, Vector3r& a,
-                                Vector3r& b) {
+// box meets the path's, tested exactly), in order along it; in a buffer of the thread's, kept between calls.
+const std::vector<Crossing>& crossings(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x,
+                                       Vector3r& a, Vector3r& b) {
   // `from` is often a corner of s (c_eff is often a corner of S): start within s instead, as far from the corner as
   // round-off could blur (1e-6 of the way to its centroid), so that the path starts on s alone, then runs parallel.
   const Triangle& own = mesh.triangles()[s];
@@ -46,7 +46,8 @@ std::vector<Crossing> crossings(const RoundedMesh& mesh, int s, const Vector3r& 
   a = from + shift;
   b = x + shift;
   const AlignedBox3r path = AlignedBox3r(a.cwiseMin(b), a.cwiseMax(b));
-  std::vector<Crossing> found;
+  thread_local std::vector<Crossing> found;
+  found.clear();
   mesh.tree().query([&](const AlignedBox3r& box) { return box.intersects(path); }, [&](int t) {
     if (t == s) return;
     const Triangle& corners = mesh.triangles()[t];
@@ -66,7 +67,7 @@ bool inCap(const RoundedMesh& mesh, int t, const Vector3r& x) {
 
 bool pathInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x) {
   Vector3r a, b;
-  const std::vector<Crossing> found = crossings(mesh, s, from, x, a, b);
+  const std::vector<Crossing>& found = crossings(mesh, s, from, x, a, b);
   // Out of the flat solid through the last triangle crossed: still in the rounded one if within its cap (the lens
   // of its sphere beyond its plane).
   return found.size() % 2 == 0 || inCap(mesh, found.back().triangle, x);
@@ -74,7 +75,7 @@ bool pathInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, const 
 
 bool pathStaysInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x) {
   Vector3r a, b;
-  const std::vector<Crossing> found = crossings(mesh, s, from, x, a, b);
+  const std::vector<Crossing>& found = crossings(mesh, s, from, x, a, b);
   // Each stretch out of the flat solid, from a crossing out to the next one in (or to x), must lie in the cap of the
   // triangle it left through or of the one it comes back through (a ball holds a segment whose ends it holds).
   for (size_t k = 0; k < found.size(); k += 2) {
