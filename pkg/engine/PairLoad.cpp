@@ -20,7 +20,7 @@ struct EnergyFrame {
   EnergyPartner::Kind kind = EnergyPartner::Plane;
 
   EnergyPartner partner(const PressureGeom& geom) const {
-    EnergyPartner p{kind};
+    EnergyPartner p{kind, Vector3r::Zero(), {}};
     if (kind == EnergyPartner::Triangle) {
       const Triangle& corners = mesh2->triangles()[geom.partnerTriangle];
       for (int i = 0; i < 3; ++i) p.corners[i] = rotation * mesh2->vertices()[corners[i]] + translation;
