@@ -1,6 +1,7 @@
 #include "pkg/shape/SurfaceRepair.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 #include <Eigen/Eigenvalues>
@@ -167,8 +168,9 @@ void requireClosedManifoldOriented(const TriangleSurface& s, const VertexNames& 
            at(defects.misoriented));
 }
 
-// Signed volume of each connected component (triangles sharing vertices), in order of first triangle.
+// Each connected component (triangles sharing vertices), in order of first triangle: its triangles and signed volume.
 struct Component {
+  std::vector<int> triangles;
   Real volume;
   int firstVertex;
 };
@@ -179,16 +181,42 @@ std::vector<Component> components(const TriangleSurface& s) {
   const std::function<int(int)> root = [&](int v) { return parent[v] == v ? v : parent[v] = root(parent[v]); };
   for (const Triangle& t : s.triangles)
     for (int i = 1; i < 3; ++i) parent[root(t[i])] = root(t[0]);
-  std::map<int, std::vector<Triangle>> byRoot;
+  std::map<int, std::vector<int>> byRoot;
   std::vector<int> order;
-  for (const Triangle& t : s.triangles) {
-    std::vector<Triangle>& part = byRoot[root(t[0])];
-    if (part.empty()) order.push_back(root(t[0]));
-    part.push_back(t);
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    std::vector<int>& part = byRoot[root(s.triangles[t][0])];
+    if (part.empty()) order.push_back(root(s.triangles[t][0]));
+    part.push_back(static_cast<int>(t));
   }
   std::vector<Component> out;
-  for (int r : order) out.push_back({massProperties(s.vertices, byRoot[r]).volume, byRoot[r].front()[0]});
+  for (int r : order) {
+    std::vector<Triangle> triangles;
+    for (int t : byRoot[r]) triangles.push_back(s.triangles[t]);
+    out.push_back({byRoot[r], massProperties(s.vertices, triangles).volume, triangles.front()[0]});
+  }
   return out;
+}
+
+// A closed, edge-manifold surface some of whose neighbouring triangles run the same way along their shared edge (STL
+// writers often mix them): the triangles are turned to agree with CGAL's orient_polygon_soup, then every separate part
+// outward, since a turned part's sense is arbitrary (a body's parts must all face out; a cavity is refused anyway).
+// Only the order of corners changes, never a vertex. Returns false, the surface untouched, where there is nothing to
+// turn or it cannot be done without splitting a vertex (a non-orientable or pinched surface): the checks then say why.
+bool orientConsistently(TriangleSurface& s) {
+  const EdgeDefects defects = findEdgeDefects(s.triangles);
+  if (defects.misoriented.count == 0 || defects.boundary.count > 0 || defects.nonManifold.count > 0) return false;
+  std::vector<Kernel::Point_3> points;
+  for (const Vector3r& x : s.vertices) points.emplace_back(x.x(), x.y(), x.z());
+  std::vector<std::vector<std::size_t>> polygons;
+  for (const Triangle& t : s.triangles) polygons.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
+  if (!CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons) || points.size() != s.vertices.size())
+    return false;
+  for (std::size_t t = 0; t < polygons.size(); ++t)
+    for (int i = 0; i < 3; ++i) s.triangles[t][i] = static_cast<int>(polygons[t][i]);
+  for (const Component& part : components(s))
+    if (part.volume < 0)
+      for (int t : part.triangles) std::swap(s.triangles[t][1], s.triangles[t][2]);
+  return true;
 }
 
 // The enclosed volume, positive or negative (inside-out). Every connected component must turn the same
@@ -226,11 +254,6 @@ Real enclosedVolume(const TriangleSurface& s, const VertexNames& name) {
   return volume;
 }
 
-void checkSurface(const TriangleSurface& s, const VertexNames& name, const std::vector<std::size_t>& faceOf) {
-  requireNonDegenerate(s, name, faceOf);
-  requireClosedManifoldOriented(s, name);
-}
-
 }  // namespace
 
 TriangleSurface repairedSurface(const PolygonSoup& soup) {
@@ -246,7 +269,9 @@ TriangleSurface repairedSurface(const PolygonSoup& soup) {
   for (std::size_t f = 0; f < welded.polygons.size(); ++f) triangulate(welded.polygons[f], f, welded.points, s, faceOf);
   s.vertices = std::move(welded.points);
   const VertexNames name(s.vertices, std::move(welded.inputIndex));
-  checkSurface(s, name, faceOf);
+  requireNonDegenerate(s, name, faceOf);
+  orientConsistently(s);
+  requireClosedManifoldOriented(s, name);
   if (enclosedVolume(s, name) < 0)
     for (Triangle& t : s.triangles) std::swap(t[1], t[2]);
   return s;
@@ -256,7 +281,8 @@ void requireValidSurface(const TriangleSurface& surface) {
   const std::vector<bool> everyVertex(surface.vertices.size(), true);
   requireFinite(surface.vertices, everyVertex);
   const VertexNames name(surface.vertices, identityIndex(surface.vertices.size()));
-  checkSurface(surface, name, identityIndex(surface.triangles.size()));
+  requireNonDegenerate(surface, name, identityIndex(surface.triangles.size()));
+  requireClosedManifoldOriented(surface, name);
   if (enclosedVolume(surface, name) < 0)
     throw std::invalid_argument("the surface is inside-out: its triangles must run counter-clockwise seen from "
                                 "outside");

@@ -215,8 +215,9 @@ void exposeMesh() {
       "Mesh.load(path, scale=1.0, radius=None, max_radius=None): reads OBJ, STL (ASCII or binary), OFF, PLY or\n"
       "GTS (GNU Triangulated Surface, as yade.ymport.gts reads it) by the extension, and multiplies coordinates\n"
       "by scale (0.001 for millimetres). Duplicate vertices are welded, faces with more than 3 corners\n"
-      "triangulated and an inside-out surface reversed; a surface that is not closed, edge-manifold and\n"
-      "consistently oriented, has degenerate triangles, non-finite coordinates or no volume raises ValueError\n"
+      "triangulated, triangles turned to agree with their neighbours and an inside-out surface reversed; a\n"
+      "surface that is not closed, edge-manifold and orientable, has degenerate triangles, non-finite\n"
+      "coordinates or no volume raises ValueError\n"
       "naming the file, the defect and where it is (in a malformed GTS file, the line).\n") + kRadiusDoc;
   bp::class_<BodyMesh, MeshPtr>(
       "Mesh",

@@ -131,15 +131,15 @@ def main():
     doubled_corner[0] = [0, 2, 6, 4]  # vertex 6 repeats vertex 4: the face is a triangle once welded
     write_obj("repeated_corner.obj", np.vstack([VERTICES, VERTICES[4]]), doubled_corner,
               "octahedron whose face 0 runs through two copies of the same point")
+    flipped = TRIANGLES.copy()
+    flipped[2] = flipped[2][::-1]
+    write_obj("inconsistent.obj", VERTICES, flipped, "octahedron with face 2 reversed")
     cube = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], float)
     write_obj("cube_quads.obj", cube, [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6],
                                        [3, 0, 4, 7]], "unit cube as six quads")
 
     # Refused, each with the defect named.
     write_obj("open.obj", VERTICES, TRIANGLES[1:], "octahedron with one face missing")
-    flipped = TRIANGLES.copy()
-    flipped[2] = flipped[2][::-1]
-    write_obj("inconsistent.obj", VERTICES, flipped, "octahedron with face 2 reversed")
     unit = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], float)
     mirrored = [1, 1, 0] - unit  # a second octahedron sharing the edge from (1, 0, 0) to (0, 1, 0)
     faces = np.vstack([TRIANGLES, TRIANGLES[:, ::-1] + 6])  # mirroring reverses orientation

@@ -84,14 +84,15 @@ def test_add_body_leaves_the_scene_as_it_was(change, named):
     assert scene_snapshot() == before
 
 
-def test_open_or_misoriented_meshes_name_the_edge():
+def test_open_meshes_name_the_edge_and_misoriented_ones_are_turned():
     sphere = rm.Mesh.icosphere(1.0, 1)
     with pytest.raises(ValueError, match=r"3 boundary edges \(the surface is not closed\), first at the edge from vertex"):
         rm.Mesh(sphere.vertices, sphere.triangles[1:], 1.0)
     flipped = sphere.triangles.copy()
     flipped[5] = flipped[5][::-1]
-    with pytest.raises(ValueError, match="3 edges between triangles of opposite orientation"):
-        rm.Mesh(sphere.vertices, flipped, 1.0)
+    turned = rm.Mesh(sphere.vertices, flipped, 1.0)
+    assert turned.volume == pytest.approx(sphere.volume, rel=1e-14)
+    np.testing.assert_allclose(turned.normals, sphere.normals, atol=1e-15)
 
 
 def test_radius_errors_name_the_argument():
