@@ -224,7 +224,7 @@ PolygonSoup readWithCgal(const std::string& path, const std::string& kind) {
 
 }  // namespace
 
-TriangleSurface readMeshFile(const std::string& path, Real scale) {
+TriangleSurface readMeshFile(const std::string& path, Real scale, const RepairOptions& repair) {
   if (!(std::isfinite(scale) && scale > 0))
     throw std::invalid_argument("scale must be positive and finite, got " + std::to_string(scale));
   const std::string kind = format(path);
@@ -235,7 +235,7 @@ TriangleSurface readMeshFile(const std::string& path, Real scale) {
   PolygonSoup soup = kind == "gts" ? readGtsSoup(path) : readWithCgal(path, kind);
   for (Vector3r& p : soup.points) p *= scale;
   try {
-    return repairedSurface(soup);
+    return repairedSurface(soup, repair);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(path + ": " + e.what());
   }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "pkg/shape/SurfaceRepair.hpp"
 #include "pkg/shape/TriangleSurface.hpp"
 
 namespace roundedmesh {
@@ -16,7 +17,7 @@ struct FileNotFound : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-TriangleSurface readMeshFile(const std::string& path, Real scale = 1);
+TriangleSurface readMeshFile(const std::string& path, Real scale = 1, const RepairOptions& repair = {});
 
 // Writes with 17 significant digits in the text formats, so that OBJ, OFF, ASCII PLY and GTS read back
 // bit for bit; STL stores single-precision floats (about 7 digits), as its format prescribes.

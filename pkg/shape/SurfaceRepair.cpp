@@ -30,7 +30,9 @@ class VertexNames {
   std::string operator()(std::size_t v) const {
     std::ostringstream s;
     const Vector3r& x = points_[v];
-    s << "vertex " << inputIndex_[v] << " (" << x.x() << ", " << x.y() << ", " << x.z() << ")";
+    if (v < inputIndex_.size()) s << "vertex " << inputIndex_[v];
+    else s << "the centre of a filled hole";
+    s << " (" << x.x() << ", " << x.y() << ", " << x.z() << ")";
     return s.str();
   }
 
@@ -197,6 +199,72 @@ std::vector<Component> components(const TriangleSurface& s) {
   return out;
 }
 
+// The holes of a surface (its boundary edges, each bordering one triangle) closed where each is flat and star-shaped
+// from its centroid (an open end cut square, as in YADE's examples/rod-penetration/rod-tiny.stl): a fan of triangles
+// from the centroid of its corners to each boundary edge, run against the edge's triangle so that the fan agrees with
+// it. A hole that is not a simple loop, not flat (farther than 1e-9 of its size from its plane) or not seen whole
+// from its centroid is refused, naming it: closing it would mean inventing a surface.
+void fillFlatHoles(TriangleSurface& s, const VertexNames& name) {
+  std::map<std::pair<int, int>, std::pair<int, int>> edges;  // undirected edge -> (uses, the direction of the last)
+  for (const Triangle& t : s.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const int from = t[i], to = t[(i + 1) % 3];
+      auto& use = edges[{std::min(from, to), std::max(from, to)}];
+      ++use.first;
+      use.second = from;
+    }
+  std::map<int, std::vector<int>> next;  // boundary vertex -> its boundary neighbours
+  for (const auto& [edge, use] : edges)
+    if (use.first == 1) {
+      next[edge.first].push_back(edge.second);
+      next[edge.second].push_back(edge.first);
+    }
+  std::map<int, bool> visited;
+  for (const auto& [start, unused] : next) {
+    if (visited[start]) continue;
+    std::vector<int> loop{start};
+    for (int previous = -1, at = start;;) {
+      visited[at] = true;
+      if (next[at].size() != 2)
+        throw std::invalid_argument("a hole meets itself at " + name(at) + ": only simple holes can be filled");
+      const int step = next[at][0] != previous ? next[at][0] : next[at][1];
+      previous = at;
+      at = step;
+      if (at == start) break;
+      loop.push_back(at);
+    }
+    Vector3r centre = Vector3r::Zero();
+    for (int v : loop) centre += s.vertices[v] / loop.size();
+    Matrix3r scatter = Matrix3r::Zero();
+    Real size = 0;
+    for (int v : loop) {
+      scatter += (s.vertices[v] - centre) * (s.vertices[v] - centre).transpose();
+      size = std::max(size, (s.vertices[v] - centre).norm());
+    }
+    const Vector3r normal = Eigen::SelfAdjointEigenSolver<Matrix3r>(scatter).eigenvectors().col(0);
+    Real offPlane = 0;
+    for (int v : loop) offPlane = std::max(offPlane, std::abs((s.vertices[v] - centre).dot(normal)));
+    const std::string hole = "the hole of " + std::to_string(loop.size()) + " edges through " + name(start);
+    if (offPlane > 1e-9 * size) {
+      std::ostringstream message;
+      message << hole << " is not flat (a corner " << offPlane << " m off its plane): only flat holes can be filled";
+      throw std::invalid_argument(message.str());
+    }
+    const int middle = static_cast<int>(s.vertices.size());
+    s.vertices.push_back(centre);
+    Real turn = 0;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      const Real side = (s.vertices[a] - centre).cross(s.vertices[b] - centre).dot(normal);
+      if (!(std::abs(side) > 1e-12 * size * size) || side * turn < 0)
+        throw std::invalid_argument(hole + " is not seen whole from its centroid: only flat holes shaped so can be filled");
+      turn = side;
+      const bool runsForward = edges[{std::min(a, b), std::max(a, b)}].second == a;
+      s.triangles.push_back(runsForward ? Triangle{b, a, middle} : Triangle{a, b, middle});
+    }
+  }
+}
+
 // A closed, edge-manifold surface some of whose neighbouring triangles run the same way along their shared edge (STL
 // writers often mix them): the triangles are turned to agree with CGAL's orient_polygon_soup, then every separate part
 // outward, since a turned part's sense is arbitrary (a body's parts must all face out; a cavity is refused anyway).
@@ -256,7 +324,7 @@ Real enclosedVolume(const TriangleSurface& s, const VertexNames& name) {
 
 }  // namespace
 
-TriangleSurface repairedSurface(const PolygonSoup& soup) {
+TriangleSurface repairedSurface(const PolygonSoup& soup, const RepairOptions& options) {
   if (soup.points.empty() || soup.polygons.empty())
     throw std::invalid_argument("the mesh is empty (" + std::to_string(soup.points.size()) + " vertices, " +
                                 std::to_string(soup.polygons.size()) + " faces)");
@@ -270,6 +338,7 @@ TriangleSurface repairedSurface(const PolygonSoup& soup) {
   s.vertices = std::move(welded.points);
   const VertexNames name(s.vertices, std::move(welded.inputIndex));
   requireNonDegenerate(s, name, faceOf);
+  if (options.fillFlatHoles) fillFlatHoles(s, name);
   orientConsistently(s);
   requireClosedManifoldOriented(s, name);
   if (enclosedVolume(s, name) < 0)

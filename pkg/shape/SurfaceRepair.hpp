@@ -25,7 +25,14 @@ struct PolygonSoup {
   std::vector<std::vector<std::size_t>> polygons;  // corner indices into points
 };
 
-TriangleSurface repairedSurface(const PolygonSoup& soup);
+// Repairs that change the shape, each only when asked for.
+struct RepairOptions {
+  // Close every hole that is flat and seen whole from the centroid of its corners with a fan from that centroid (an
+  // open end cut flat, as in YADE's examples/rod-penetration/rod-tiny.stl); any other hole is refused, named.
+  bool fillFlatHoles = false;
+};
+
+TriangleSurface repairedSurface(const PolygonSoup& soup, const RepairOptions& options = {});
 
 // The checks of repairedSurface on a surface that must already be valid, consistently oriented and outward: throws
 // the same errors, repairs nothing. Vertex indices in messages are the surface's own.

@@ -74,8 +74,9 @@ MeshPtr fromArrays(const bp::object& vertices, const bp::object& triangles, cons
   return bodyMesh(surface, radius, maxRadius);
 }
 
-MeshPtr load(const std::string& path, Real scale, const bp::object& radius, const bp::object& maxRadius) {
-  return bodyMesh(readMeshFile(path, scale), radius, maxRadius);
+MeshPtr load(const std::string& path, Real scale, const bp::object& radius, const bp::object& maxRadius,
+             bool fillHoles) {
+  return bodyMesh(readMeshFile(path, scale, RepairOptions{fillHoles}), radius, maxRadius);
 }
 
 void save(const BodyMesh& mesh, const std::string& path) { writeMeshFile(path, mesh.inputFrameSurface()); }
@@ -114,15 +115,10 @@ bp::tuple makeBlendedShape(Real blend, const bp::list& primitives, int nodes, Re
                         scale);
 }
 
-std::vector<Vector3r> perTriangle(const BodyMesh& mesh, Vector3r RoundedTriangle::*field) {
-  std::vector<Vector3r> out(mesh.shape().triangleCount());
+template <class Value>
+std::vector<Value> perTriangle(const BodyMesh& mesh, Value RoundedTriangle::*field) {
+  std::vector<Value> out(mesh.shape().triangleCount());
   for (int t = 0; t < mesh.shape().triangleCount(); ++t) out[t] = mesh.shape().rounded(t).*field;
-  return out;
-}
-
-std::vector<Real> areas(const BodyMesh& mesh) {
-  std::vector<Real> out(mesh.shape().triangleCount());
-  for (int t = 0; t < mesh.shape().triangleCount(); ++t) out[t] = mesh.shape().rounded(t).area;
   return out;
 }
 
@@ -212,13 +208,16 @@ void exposeMesh() {
       "(m, 3) vertex indices counter-clockwise seen from outside. Checked and repaired like a file\n"
       "(see Mesh.load).\n") + kRadiusDoc;
   const std::string loadDoc = std::string(
-      "Mesh.load(path, scale=1.0, radius=None, max_radius=None): reads OBJ, STL (ASCII or binary), OFF, PLY or\n"
+      "Mesh.load(path, scale=1.0, radius=None, max_radius=None, fill_holes=False): reads OBJ, STL (ASCII or\n"
+      "binary), OFF, PLY or\n"
       "GTS (GNU Triangulated Surface, as yade.ymport.gts reads it) by the extension, and multiplies coordinates\n"
       "by scale (0.001 for millimetres). Duplicate vertices are welded, faces with more than 3 corners\n"
       "triangulated, triangles turned to agree with their neighbours and an inside-out surface reversed; a\n"
       "surface that is not closed, edge-manifold and orientable, has degenerate triangles, non-finite\n"
       "coordinates or no volume raises ValueError\n"
-      "naming the file, the defect and where it is (in a malformed GTS file, the line).\n") + kRadiusDoc;
+      "naming the file, the defect and where it is (in a malformed GTS file, the line). fill_holes=True closes\n"
+      "each hole that is flat and seen whole from its centroid (an open end cut flat) with a fan from that\n"
+      "centroid; any other hole is still refused.\n") + kRadiusDoc;
   bp::class_<BodyMesh, MeshPtr>(
       "Mesh",
       "A closed triangulated rounded body shape, stored in its principal frame (centre of mass at the origin,\n"
@@ -232,7 +231,7 @@ void exposeMesh() {
                                              bp::arg("max_radius") = bp::object()), arraysDoc.c_str())
       .staticmethod("from_arrays")
       .def("load", &load, (bp::arg("path"), bp::arg("scale") = 1.0, bp::arg("radius") = bp::object(),
-                       bp::arg("max_radius") = bp::object()), loadDoc.c_str())
+                       bp::arg("max_radius") = bp::object(), bp::arg("fill_holes") = false), loadDoc.c_str())
       .staticmethod("load")
       .def("save", &save, (bp::arg("path")),
            "Writes the (repaired) surface, in the frame it was given in, as OBJ, STL, OFF, PLY or GTS by the path's\n"
@@ -291,7 +290,11 @@ void exposeMesh() {
                     "D = std(triangle area) / mean(triangle area) (Eq. 26)")
       .add_property("normals", +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::normal)); },
                     "(m, 3) outward unit normal of each triangle")
-      .add_property("areas", +[](const BodyMesh& m) { return toArray(areas(m)); }, "(m,) triangle areas [m^2]")
+      .add_property("areas", +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::area)); },
+                    "(m,) triangle areas [m^2]")
+      .add_property("cap_heights", +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::capHeight)); },
+                    "(m,) height of each triangle's cap over its plane [m]: how far the rounded body reaches beyond\n"
+                    "the flat triangle, and so how far from the mesh it can push a partner")
       .add_property("sphere_centres",
                     +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::sphereCentre)); },
                     "(m, 3) centre of each triangle's encompassing sphere, principal frame [m]")

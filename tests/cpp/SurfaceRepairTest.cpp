@@ -2,6 +2,7 @@
 // defect and its place in the message. The Python suite checks the same on broken files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "pkg/shape/Icosphere.hpp"
@@ -96,6 +97,43 @@ TEST(SurfaceRepair, RefusesASurfaceThatCannotBeOriented) {
                            {5, 1, 3}}};
   const std::string message = messageOf(plane);
   EXPECT_NE(message.find("edges between triangles of opposite orientation"), std::string::npos) << message;
+}
+
+// The unit cube without its top: refused as it is; asked to, the flat square hole is closed by a fan from its centre,
+// and the volume is the cube's to round-off.
+TEST(SurfaceRepair, FillsAFlatHoleOnlyWhenAsked) {
+  PolygonSoup open = cube();
+  open.polygons.erase(open.polygons.begin() + 1);  // the top, z = 1
+  EXPECT_NE(messageOf(open).find("4 boundary edges (the surface is not closed)"), std::string::npos);
+  const TriangleSurface s = repairedSurface(open, RepairOptions{true});
+  EXPECT_EQ(s.triangles.size(), 10u + 4u);
+  EXPECT_EQ(s.vertices.back(), Vector3r(0.5, 0.5, 1));
+  EXPECT_NEAR(massProperties(s.vertices, s.triangles).volume, 1.0, 1e-14);
+}
+
+// A hole that is not flat (the six neighbours of a vertex of a subdivided icosphere lie on the sphere, not in a
+// plane) is refused, named, even when filling is asked for.
+TEST(SurfaceRepair, RefusesToFillAHoleThatIsNotFlat) {
+  const TriangleSurface sphere = icosphereSurface(1.0, 2);
+  int vertex = -1;  // a vertex with six triangles
+  for (int v = 0; v < static_cast<int>(sphere.vertices.size()) && vertex < 0; ++v) {
+    int around = 0;
+    for (const Triangle& t : sphere.triangles) around += std::count(t.begin(), t.end(), v);
+    if (around == 6) vertex = v;
+  }
+  ASSERT_GE(vertex, 0);
+  PolygonSoup holed{sphere.vertices, {}};
+  for (const Triangle& t : sphere.triangles)
+    if (std::count(t.begin(), t.end(), vertex) == 0)
+      holed.polygons.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
+  std::string message;
+  try {
+    repairedSurface(holed, RepairOptions{true});
+  } catch (const std::invalid_argument& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("the hole of 6 edges through vertex"), std::string::npos) << message;
+  EXPECT_NE(message.find("is not flat"), std::string::npos) << message;
 }
 
 TEST(SurfaceRepair, NamesEachDefect) {
