@@ -221,7 +221,9 @@ void exposeMesh() {
   bp::class_<BodyMesh, MeshPtr>(
       "Mesh",
       "A closed triangulated rounded body shape, stored in its principal frame (centre of mass at the origin,\n"
-      "principal axes of inertia along x, y, z). Each triangle has a radius of curvature.\n\n"
+      "principal axes of inertia along x, y, z: in ascending order of moment, x the long axis of an elongated\n"
+      "body, except that a mesh whose inertia is already diagonal keeps its axes). Each triangle has a radius\n"
+      "of curvature.\n\n"
       "Mesh(vertices, triangles, radius=None, max_radius=None) is Mesh.from_arrays.",
       bp::no_init)
       .def("__init__", bp::make_constructor(&fromArrays, bp::default_call_policies(),
@@ -246,13 +248,16 @@ void exposeMesh() {
            "curvature: 'exact' (every triangle has the sphere's radius) or 'computed' (Eq. 1 from the mesh).")
       .staticmethod("icosphere")
       .def("spheroid", &makeSpheroid, (bp::arg("a"), bp::arg("b"), bp::arg("nodes"), bp::arg("curvature") = "exact"),
-           "Spheroid with semi-axis a [m] along z and b [m] across, about `nodes` nodes (typically within 2 %), near-\n"
+           "Spheroid with semi-axis a [m] along its axis and b [m] across (the mesh is not exactly symmetric, so its\n"
+           "principal axes are ordered: the axis on x when a > b, on z when a < b), about `nodes` nodes (typically\n"
+           "within 2 %), near-\n"
            "equilateral triangles. curvature: 'exact' (the spheroid's mean curvature under each triangle) or\n"
            "'computed' (Eq. 1 from the mesh). Both principal curvatures likewise (exact, or estimated from the mesh).")
       .staticmethod("spheroid")
       .def("cylinder", &makeCylinder,
            (bp::arg("radius"), bp::arg("length"), bp::arg("nodes"), bp::arg("curvature") = "exact"),
-           "Closed cylinder along z with flat caps, about `nodes` nodes (within 3 % from 100 nodes on). curvature: 'exact'\n"
+           "Closed cylinder along z with flat caps (its inertia is diagonal as made, so it stays along z), about\n"
+           "`nodes` nodes (within 3 % from 100 nodes on). curvature: 'exact'\n"
            "(mean curvature 1/(2 radius) on the hull, flat caps) or 'computed' (Eq. 1 from the mesh).")
       .staticmethod("cylinder")
       .def("_blended_shape", &makeBlendedShape,
