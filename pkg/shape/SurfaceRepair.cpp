@@ -268,23 +268,22 @@ void fillFlatHoles(TriangleSurface& s, const VertexNames& name) {
 // A closed, edge-manifold surface some of whose neighbouring triangles run the same way along their shared edge (STL
 // writers often mix them): the triangles are turned to agree with CGAL's orient_polygon_soup, then every separate part
 // outward, since a turned part's sense is arbitrary (a body's parts must all face out; a cavity is refused anyway).
-// Only the order of corners changes, never a vertex. Returns false, the surface untouched, where there is nothing to
-// turn or it cannot be done without splitting a vertex (a non-orientable or pinched surface): the checks then say why.
-bool orientConsistently(TriangleSurface& s) {
+// Only the order of corners changes, never a vertex. The surface is left as it is where there is nothing to turn or it
+// cannot be done without splitting a vertex (a non-orientable or pinched surface): the checks then say why.
+void orientConsistently(TriangleSurface& s) {
   const EdgeDefects defects = findEdgeDefects(s.triangles);
-  if (defects.misoriented.count == 0 || defects.boundary.count > 0 || defects.nonManifold.count > 0) return false;
+  if (defects.misoriented.count == 0 || defects.boundary.count > 0 || defects.nonManifold.count > 0) return;
   std::vector<Kernel::Point_3> points;
   for (const Vector3r& x : s.vertices) points.emplace_back(x.x(), x.y(), x.z());
   std::vector<std::vector<std::size_t>> polygons;
   for (const Triangle& t : s.triangles) polygons.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
   if (!CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons) || points.size() != s.vertices.size())
-    return false;
+    return;
   for (std::size_t t = 0; t < polygons.size(); ++t)
     for (int i = 0; i < 3; ++i) s.triangles[t][i] = static_cast<int>(polygons[t][i]);
   for (const Component& part : components(s))
     if (part.volume < 0)
       for (int t : part.triangles) std::swap(s.triangles[t][1], s.triangles[t][2]);
-  return true;
 }
 
 // The enclosed volume, positive or negative (inside-out). Every connected component must turn the same
