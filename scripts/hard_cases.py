@@ -10,8 +10,9 @@ users do:
                 (scripts/validation/deep_monotonicity.py, partner_monotonicity.py): the force along the push must
                 never fall
     coarse      a 12-triangle bar (2 x 2 x 5 cm), the gummy bear coarsened to 150 nodes and a plate whose sides are
-                slivers (1 x 20 x 50 mm, 12 triangles, 50:1): 1 mm from a Wall, a Box and a Facet they feel no
-                force, and dropped 1 mm onto a Wall, a Box and a floor of two Facets they come to rest on it
+                slivers (1 x 20 x 50 mm, 12 triangles, 50:1), as a user makes them (rm.Mesh of the 12 triangles,
+                prepared by its default tolerance; the generator's bear): 1 mm from a Wall, a Box and a Facet they
+                feel no force, and dropped 1 mm onto a Wall, a Box and a floor of two Facets they come to rest on it
                 (slower than 1 cm/s after 2 s)
     collisions  undamped, frictionless collisions of two gummy bears and of a bear with a pear, head-on and
                 off-centre, at the Hertz range (0.05 r_eq) and deep (0.3 r_eq), O.dt = dt_c / 50
@@ -170,21 +171,21 @@ def pressed_checks(args, report):
 
 # --- Coarse meshes ---------------------------------------------------------------------------------------------
 
-def box_mesh(x, y, z):
-    """A closed box of 12 triangles, x by y by z [m], centred on the origin, outward."""
+def box_arrays(x, y, z):
+    """A closed box of 12 triangles, x by y by z [m], centred on the origin, outward: (vertices, triangles)."""
     import numpy as np
-    import roundedmesh as rm
     corners = [(sx * x / 2, sy * y / 2, sz * z / 2) for sz in (-1, 1) for sy in (-1, 1) for sx in (-1, 1)]
     quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
-    triangles = [t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))]
-    return rm.Mesh(np.array(corners, float), np.array(triangles))
+    return np.array(corners, float), np.array([t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))])
 
 
 def coarse_meshes():
+    """The coarse meshes as a user makes them: the boxes of 12 triangles through rm.Mesh (prepared to its default
+    tolerance, doc/user-guide.md), the coarsened gummy bear from the generator (its exact curvature, never changed)."""
     import roundedmesh as rm
-    return {"12-triangle bar 2 x 2 x 5 cm": box_mesh(0.02, 0.02, 0.05),
+    return {"12-triangle bar 2 x 2 x 5 cm": rm.Mesh(*box_arrays(0.02, 0.02, 0.05)),
             "gummy bear of 150 nodes": rm.Mesh.reference_shape("gummy_bear", nodes=150),
-            "sliver plate 1 x 20 x 50 mm": box_mesh(0.001, 0.02, 0.05)}
+            "sliver plate 1 x 20 x 50 mm": rm.Mesh(*box_arrays(0.001, 0.02, 0.05))}
 
 
 def lowest_below(mesh, ori):

@@ -15,6 +15,7 @@
 #include "pkg/material/HertzMaterial.hpp"
 #include "pkg/shape/Box.hpp"
 #include "pkg/shape/Facet.hpp"
+#include "pkg/shape/MassProperties.hpp"
 #include "pkg/shape/Plane.hpp"
 #include "pkg/shape/RoundedMesh.hpp"
 #include "pkg/shape/Sphere.hpp"
@@ -46,7 +47,7 @@ struct RoundedBody {
 // sharedShape() and volume() [m^3]): its shape, material and volume-equivalent radius.
 template <class Mesh>
 RoundedBody roundedBody(int id, const Mesh& mesh, const HertzMaterial& material) {
-  return {id, mesh.sharedShape(), material, std::cbrt(3 * mesh.volume() / (4 * M_PI))};
+  return {id, mesh.sharedShape(), material, equivalentRadius(mesh.volume())};
 }
 
 struct Partner {

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "pkg/meshing/MeshPreparation.hpp"
+#include "pkg/shape/CapTolerance.hpp"
 #include "pkg/shape/Curvature.hpp"
 #include "pkg/shape/SurfaceRepair.hpp"
 
@@ -24,17 +26,32 @@ std::vector<Real> inverse(const std::vector<Real>& values) {
 
 }  // namespace
 
-Real defaultMaxRadius(Real volume) { return 100 * std::cbrt(3 * volume / (4 * M_PI)); }
+Real defaultMaxRadius(Real volume) { return 100 * equivalentRadius(volume); }
 
-BodyMesh::BodyMesh(const TriangleSurface& surface, const std::optional<std::vector<Real>>& prescribedCurvatures,
-                   std::optional<Real> maxRadius, std::optional<std::vector<PrincipalCurvature>> prescribedPrincipal) {
-  const MassProperties mass = solidMassProperties(surface.vertices, surface.triangles);
-  if (prescribedCurvatures && prescribedCurvatures->size() != surface.triangles.size())
+BodyMesh::BodyMesh(const TriangleSurface& input, const std::optional<std::vector<Real>>& prescribedCurvatures,
+                   std::optional<Real> maxRadius, std::optional<std::vector<PrincipalCurvature>> prescribedPrincipal,
+                   std::optional<CapPolicy> caps) {
+  MassProperties mass = solidMassProperties(input.vertices, input.triangles);
+  if (prescribedCurvatures && prescribedCurvatures->size() != input.triangles.size())
     throw std::invalid_argument("curvature: " + std::to_string(prescribedCurvatures->size()) + " values given for " +
-                                std::to_string(surface.triangles.size()) + " triangles");
+                                std::to_string(input.triangles.size()) + " triangles");
   curvature_.source = prescribedCurvatures ? CurvatureSource::Prescribed : CurvatureSource::Computed;
-  curvature_.meanCurvatures = prescribedCurvatures ? *prescribedCurvatures : meanCurvature(surface).triangles;
   curvature_.maxRadius = maxRadius.value_or(defaultMaxRadius(mass.volume));
+  const bool bounded = caps && curvature_.source == CurvatureSource::Computed;
+  if (caps && !(caps->tolerance > 0))
+    throw std::invalid_argument("tolerance: must be positive, got " + std::to_string(caps->tolerance));
+  const Real maxCapHeight = bounded ? caps->tolerance * equivalentRadius(mass.volume) : 0;
+  TriangleSurface surface = input;
+  if (bounded && caps->remesh) {
+    PreparedSurface prepared = surfaceWithinTolerance(input, curvature_.maxRadius, maxCapHeight);
+    remeshPasses_ = prepared.remeshPasses;
+    remeshEdgeLength_ = prepared.edgeLength;
+    if (remeshPasses_ > 0) {
+      surface = std::move(prepared.surface);
+      mass = solidMassProperties(surface.vertices, surface.triangles);
+    }
+  }
+  curvature_.meanCurvatures = prescribedCurvatures ? *prescribedCurvatures : meanCurvature(surface).triangles;
   std::vector<PrincipalCurvature> principal;
   if (prescribedPrincipal) {
     principal = std::move(*prescribedPrincipal);
@@ -44,8 +61,9 @@ BodyMesh::BodyMesh(const TriangleSurface& surface, const std::optional<std::vect
   } else {
     principal = principalCurvatures(surface);
   }
-  placeInPrincipalFrame(RoundedMesh(surface.vertices, surface.triangles,
-                                    contactRadii(curvature_.meanCurvatures, curvature_.maxRadius), std::move(principal)),
+  std::vector<Real> radii = contactRadii(curvature_.meanCurvatures, curvature_.maxRadius);
+  if (bounded) boundedCaps_ = boundCapHeights(surface, maxCapHeight, radii, principal);
+  placeInPrincipalFrame(RoundedMesh(surface.vertices, surface.triangles, std::move(radii), std::move(principal)),
                         mass);
 }
 

@@ -4,6 +4,7 @@
 // second moments are summed (divergence theorem).
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "pkg/shape/RoundedMesh.hpp"
@@ -17,6 +18,9 @@ struct MassProperties {
 };
 
 MassProperties massProperties(const std::vector<Vector3r>& vertices, const std::vector<Triangle>& triangles);
+
+// Radius of the sphere of the same volume [m].
+inline Real equivalentRadius(Real volume) { return std::cbrt(3 * volume / (4 * M_PI)); }
 
 // Principal axes of an inertia tensor: orientation maps principal-frame vectors to the input frame, and
 // moments are the matching principal moments. A tensor that is already diagonal (off-diagonal part below

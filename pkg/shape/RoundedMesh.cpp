@@ -19,13 +19,6 @@ std::string describe(const Vector3r& v) {
   return s.str();
 }
 
-// Centre of the circle through a, b, c (in their plane).
-Vector3r circumcentre(const Vector3r& a, const Vector3r& b, const Vector3r& c) {
-  const Vector3r ab = b - a, ac = c - a;
-  const Vector3r n = ab.cross(ac);
-  return a + (ac.squaredNorm() * n.cross(ab) + ab.squaredNorm() * ac.cross(n)) / (2 * n.squaredNorm());
-}
-
 }  // namespace
 
 RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> triangles,

@@ -22,6 +22,12 @@ std::vector<Real> triangleAreas(const TriangleSurface& surface) {
   return areas;
 }
 
+Vector3r circumcentre(const Vector3r& a, const Vector3r& b, const Vector3r& c) {
+  const Vector3r ab = b - a, ac = c - a;
+  const Vector3r n = ab.cross(ac);
+  return a + (ac.squaredNorm() * n.cross(ab) + ab.squaredNorm() * ac.cross(n)) / (2 * n.squaredNorm());
+}
+
 bool hasZeroArea(const Vector3r& a, const Vector3r& b, const Vector3r& c) {
   const Real longestEdgeSq = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
   return !((b - a).cross(c - a).norm() > 1e-12 * longestEdgeSq);

@@ -23,6 +23,9 @@ std::vector<Real> triangleAreas(const TriangleSurface& surface);
 // Outward unit normal of triangle t (corners counter-clockwise seen from outside).
 Vector3r triangleNormal(const TriangleSurface& surface, int t);
 
+// Centre of the circle through a, b, c, in their plane [m].
+Vector3r circumcentre(const Vector3r& a, const Vector3r& b, const Vector3r& c);
+
 // Whether the triangle a, b, c has no area worth the name: twice its area at most 1e-12 of its longest edge
 // squared. Relative, so that it holds at any scale; round-off of any sensible triangle is far above it.
 bool hasZeroArea(const Vector3r& a, const Vector3r& b, const Vector3r& c);

@@ -11,6 +11,7 @@
 #include "pkg/meshing/ImplicitCurvature.hpp"
 #include "pkg/meshing/BlendedShape.hpp"
 #include "pkg/shape/BodyMesh.hpp"
+#include "pkg/shape/CapTolerance.hpp"
 #include "pkg/shape/Curvature.hpp"
 #include "pkg/shape/Cylinder.hpp"
 #include "pkg/shape/Distortion.hpp"
@@ -43,9 +44,12 @@ std::optional<std::vector<Real>> prescribedCurvatures(const bp::object& radius, 
   return curvatures;
 }
 
-MeshPtr bodyMesh(const TriangleSurface& surface, const bp::object& radius, const bp::object& maxRadius) {
+MeshPtr bodyMesh(const TriangleSurface& surface, const bp::object& radius, const bp::object& maxRadius,
+                 const bp::object& tolerance, bool remesh) {
+  std::optional<CapPolicy> caps;
+  if (!tolerance.is_none()) caps = CapPolicy{bp::extract<Real>(tolerance)(), remesh};
   return std::make_shared<BodyMesh>(surface, prescribedCurvatures(radius, static_cast<int>(surface.triangles.size())),
-                                    optionalReal(maxRadius));
+                                    optionalReal(maxRadius), std::nullopt, caps);
 }
 
 // The generators' curvature: "exact" (the smooth shape's, prescribed) or "computed" (Eq. 1 from the mesh).
@@ -57,7 +61,7 @@ MeshPtr generated(const TriangleSurface& surface, const std::string& curvature, 
 }
 
 MeshPtr fromArrays(const bp::object& vertices, const bp::object& triangles, const bp::object& radius,
-                   const bp::object& maxRadius) {
+                   const bp::object& maxRadius, const bp::object& tolerance, bool remesh) {
   PolygonSoup soup;
   soup.points = toPoints(vertices, "vertices");
   for (const Triangle& t : toTriangles(triangles, "triangles")) {
@@ -71,12 +75,12 @@ MeshPtr fromArrays(const bp::object& vertices, const bp::object& triangles, cons
   } catch (const std::invalid_argument& e) {
     raiseValueError(std::string("mesh: ") + e.what());
   }
-  return bodyMesh(surface, radius, maxRadius);
+  return bodyMesh(surface, radius, maxRadius, tolerance, remesh);
 }
 
 MeshPtr load(const std::string& path, Real scale, const bp::object& radius, const bp::object& maxRadius,
-             bool fillHoles) {
-  return bodyMesh(readMeshFile(path, scale, RepairOptions{fillHoles}), radius, maxRadius);
+             bool fillHoles, const bp::object& tolerance, bool remesh) {
+  return bodyMesh(readMeshFile(path, scale, RepairOptions{fillHoles}), radius, maxRadius, tolerance, remesh);
 }
 
 void save(const BodyMesh& mesh, const std::string& path) { writeMeshFile(path, mesh.inputFrameSurface()); }
@@ -123,6 +127,8 @@ std::vector<Value> perTriangle(const BodyMesh& mesh, Value RoundedTriangle::*fie
 }
 
 TriangleSurface bodySurface(const BodyMesh& m) { return {m.shape().vertices(), m.shape().triangles()}; }
+
+std::vector<Real> triangleCapHeights(const BodyMesh& m) { return capHeights(bodySurface(m), m.shape().radii()); }
 
 np::ndarray centroid(const BodyMesh& m) { return toArray(std::vector<Real>(m.inputCentroid().data(), m.inputCentroid().data() + 3)); }
 np::ndarray inertia(const BodyMesh& m) { return toArray(std::vector<Real>(m.principalMoments().data(), m.principalMoments().data() + 3)); }
@@ -197,19 +203,26 @@ void translateFileNotFound(const FileNotFound& e) { PyErr_SetString(PyExc_FileNo
 const char* const kRadiusDoc =
     "radius: None to compute each triangle's curvature from the mesh (Eq. 1), or a radius of curvature [m] for\n"
     "all triangles or one per triangle (inf: flat, negative: concave). max_radius [m]: the radius flat and\n"
-    "concave triangles use in contact (default 100 volume-equivalent radii); see doc/physics.md.";
+    "concave triangles use in contact (default 100 volume-equivalent radii); see doc/physics.md.\n"
+    "tolerance: with the curvature computed from the mesh, how far (a fraction of the volume-equivalent radius\n"
+    "r_eq) the rounded body may lie beyond the mesh (Mesh.deviation). Where a cap would rise higher (a mesh too\n"
+    "coarse for its curvature: sharp edges, slivers, a coarse scan), the mesh is remeshed finer with the same shape\n"
+    "and its sharp edges kept (remesh=True, Mesh.remesh_passes), and any cap still beyond gets the smallest radius\n"
+    "that keeps it within (Mesh.bounded_caps). Default 0.05 (half the Hertz depth); None takes the mesh and its\n"
+    "radii as they are. Prescribed radii are never changed.";
 
 }  // namespace
 
 void exposeMesh() {
   bp::register_exception_translator<FileNotFound>(&translateFileNotFound);
+  bp::scope().attr("DEFAULT_MESH_TOLERANCE") = kDefaultCapTolerance;
   const std::string arraysDoc = std::string(
-      "Mesh.from_arrays(vertices, triangles, radius=None, max_radius=None): vertices (n, 3) [m], triangles\n"
-      "(m, 3) vertex indices counter-clockwise seen from outside. Checked and repaired like a file\n"
-      "(see Mesh.load).\n") + kRadiusDoc;
+      "Mesh.from_arrays(vertices, triangles, radius=None, max_radius=None, tolerance=0.05, remesh=True):\n"
+      "vertices (n, 3) [m], triangles (m, 3) vertex indices counter-clockwise seen from outside. Checked and\n"
+      "repaired like a file (see Mesh.load).\n") + kRadiusDoc;
   const std::string loadDoc = std::string(
-      "Mesh.load(path, scale=1.0, radius=None, max_radius=None, fill_holes=False): reads OBJ, STL (ASCII or\n"
-      "binary), OFF, PLY or\n"
+      "Mesh.load(path, scale=1.0, radius=None, max_radius=None, fill_holes=False, tolerance=0.05, remesh=True):\n"
+      "reads OBJ, STL (ASCII or binary), OFF, PLY or\n"
       "GTS (GNU Triangulated Surface, as yade.ymport.gts reads it) by the extension, and multiplies coordinates\n"
       "by scale (0.001 for millimetres). Duplicate vertices are welded, faces with more than 3 corners\n"
       "triangulated, triangles turned to agree with their neighbours and an inside-out surface reversed; a\n"
@@ -224,16 +237,21 @@ void exposeMesh() {
       "principal axes of inertia along x, y, z: in ascending order of moment, x the long axis of an elongated\n"
       "body, except that a mesh whose inertia is already diagonal keeps its axes). Each triangle has a radius\n"
       "of curvature.\n\n"
-      "Mesh(vertices, triangles, radius=None, max_radius=None) is Mesh.from_arrays.",
+      "Mesh(vertices, triangles, radius=None, max_radius=None, tolerance=0.05, remesh=True) is Mesh.from_arrays.",
       bp::no_init)
       .def("__init__", bp::make_constructor(&fromArrays, bp::default_call_policies(),
                                             (bp::arg("vertices"), bp::arg("triangles"), bp::arg("radius") = bp::object(),
-                                             bp::arg("max_radius") = bp::object())))
+                                             bp::arg("max_radius") = bp::object(),
+                                             bp::arg("tolerance") = kDefaultCapTolerance,
+                                             bp::arg("remesh") = true)))
       .def("from_arrays", &fromArrays, (bp::arg("vertices"), bp::arg("triangles"), bp::arg("radius") = bp::object(),
-                                             bp::arg("max_radius") = bp::object()), arraysDoc.c_str())
+                                        bp::arg("max_radius") = bp::object(), bp::arg("tolerance") = kDefaultCapTolerance,
+                                        bp::arg("remesh") = true),
+           arraysDoc.c_str())
       .staticmethod("from_arrays")
       .def("load", &load, (bp::arg("path"), bp::arg("scale") = 1.0, bp::arg("radius") = bp::object(),
-                       bp::arg("max_radius") = bp::object(), bp::arg("fill_holes") = false), loadDoc.c_str())
+                       bp::arg("max_radius") = bp::object(), bp::arg("fill_holes") = false,
+                       bp::arg("tolerance") = kDefaultCapTolerance, bp::arg("remesh") = true), loadDoc.c_str())
       .staticmethod("load")
       .def("save", &save, (bp::arg("path")),
            "Writes the (repaired) surface, in the frame it was given in, as OBJ, STL, OFF, PLY or GTS by the path's\n"
@@ -297,9 +315,23 @@ void exposeMesh() {
                     "(m, 3) outward unit normal of each triangle")
       .add_property("areas", +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::area)); },
                     "(m,) triangle areas [m^2]")
-      .add_property("cap_heights", +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::capHeight)); },
-                    "(m,) height of each triangle's cap over its plane [m]: how far the rounded body reaches beyond\n"
-                    "the flat triangle, and so how far from the mesh it can push a partner")
+      .add_property("cap_heights", +[](const BodyMesh& m) { return toArray(triangleCapHeights(m)); },
+                    "(m,) height of each triangle's cap over the triangle [m] (pkg/shape/CapTolerance.hpp): how far the\n"
+                    "rounded body reaches beyond the flat triangle, and so how far from the mesh it can push a partner")
+      .add_property("deviation",
+                    +[](const BodyMesh& m) {
+                      const std::vector<Real> h = triangleCapHeights(m);
+                      return *std::max_element(h.begin(), h.end());
+                    },
+                    "the tallest cap [m]: the two-sided distance between the rounded body and the flat mesh (no point\n"
+                    "of either lies farther from the other)")
+      .add_property("remesh_passes", &BodyMesh::remeshPasses,
+                    "how many times the input was remeshed finer to bring its caps within the tolerance (0: loaded\n"
+                    "as it is; also for generated, prescribed or unpickled meshes)")
+      .add_property("remesh_edge_length", &BodyMesh::remeshEdgeLength, "target edge length of the last pass [m]")
+      .add_property("bounded_caps", &BodyMesh::boundedCaps,
+                    "how many triangles' radii were raised, after any remeshing, to keep their caps within the\n"
+                    "tolerance (Mesh.load, Mesh.from_arrays); 0 for generated, prescribed or unpickled meshes")
       .add_property("sphere_centres",
                     +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::sphereCentre)); },
                     "(m, 3) centre of each triangle's encompassing sphere, principal frame [m]")

@@ -4,8 +4,13 @@ horizontal y axis at 3 rad/s with YADE's RotationEngine, filled with 30 gummy be
 40 YADE spheres of radius 0.01 m (rm.add_sphere), with friction mu = 0.5. O.dt = 1e-4 s, 20,000 steps (2 s).
 
     yade -n -x scripts/examples/example_drum.py [--steps 20000] [--out out/drum] [--seed 1] [--sample 100]
-        [--vtk-every 1000] [--threads 1] [--peers clumps] [--start-overlap 0.3] [--place-only]
+        [--vtk-every 1000] [--threads 1] [--peers clumps] [--start-overlap 0.3] [--place-only] [--contents horses]
     /usr/bin/python3 scripts/examples/example_drum.py [the same options]
+
+--contents horses fills the same drum with 30 of YADE's own GTS horses instead (examples/gts-horse/horse.coarse.gts,
+336 nodes, scaled to 56 mm long; Debian's yade package ships it), loaded as a user would, with Mesh.load's defaults
+(the coarse mesh is remeshed where too coarse for its curvature: 4,709 nodes), same materials, placed apart on a
+lattice of their boxes (horse_poses) and run the same way: the test of a coarse real mesh in a Facet drum (issue 24).
 
 The drum (ours, S7): the mantle is a regular 24-gon prism whose panels lie at the inner radius 0.15 m from the axis
 (panel k centred at the angle 15 k degrees in the x-z plane, its corners at 0.15 / cos(7.5 deg) = 0.1513 m), from
@@ -86,6 +91,7 @@ import shlex
 import statistics as stats
 import sys
 import time
+import warnings
 
 import numpy as np
 
@@ -139,6 +145,9 @@ RELAX_DAMPING = 0.3       # NewtonIntegrator's damping while they relax ...
 RELAX_MAX_STEPS = 40000   # ... for at most this many steps
 MIN_CENTRE_DISTANCE = 0.01  # no body's surface comes nearer its centre than this [m] (checked)
 PLACEMENT_VERSION = 1
+HORSE_FILE = "/usr/share/doc/yade/examples/gts-horse/horse.coarse.gts"  # Debian's yade package ships it
+HORSE_LENGTH = 0.056      # [m]
+HORSES = 30
 
 
 def parse(argv):
@@ -155,6 +164,8 @@ def parse(argv):
     parser.add_argument("--start-overlap", type=float, default=START_OVERLAP * 1e3, metavar="MM",
                         help=f"let the bodies start overlapping by up to MM millimetres (default {START_OVERLAP * 1e3:g}; "
                              "0: S7's clean start, which its contents do not reach)")
+    parser.add_argument("--contents", choices=["s7", "horses"], default="s7",
+                        help="s7 (default): S7's bears, pears and spheres; horses: 30 of YADE's GTS horses (56 mm)")
     parser.add_argument("--place-only", action="store_true",
                         help="only place the bodies (written to <out>/placement_seed<seed>.csv)")
     args = parser.parse_args(argv)
@@ -240,8 +251,42 @@ def materials():
     return (rm.HertzMaterial(friction=FRICTION, **BODY), rm.HertzMaterial(friction=FRICTION, **DRUM))
 
 
-def meshes():
-    return {name: rm.Mesh.reference_shape(name) for name in COUNTS}
+def horse_mesh():
+    """YADE's GTS horse scaled to HORSE_LENGTH, prepared by Mesh.load (remeshed where too coarse for its curvature)."""
+    with warnings.catch_warnings():  # the file as it is, only for its size
+        warnings.simplefilter("ignore", RuntimeWarning)
+        extent = np.ptp(np.asarray(rm.Mesh.load(HORSE_FILE, tolerance=None).vertices), axis=0).max()
+    return rm.Mesh.load(HORSE_FILE, scale=HORSE_LENGTH / extent)
+
+
+def meshes(names=tuple(COUNTS)):
+    return {name: horse_mesh() if name == "horse" else rm.Mesh.reference_shape(name) for name in names}
+
+
+def _product(a, b):
+    """The quaternion product a b, both (w, x, y, z)."""
+    return np.array([a[0] * b[0] - a[1:] @ b[1:], *(a[0] * b[1:] + b[0] * a[1:] + np.cross(a[1:], b[1:]))])
+
+
+def horse_poses(seed):
+    """--contents horses: [(kind, position (3,) [m], quaternion (w, x, y, z))] of HORSES horses with their shortest
+    principal axis (z) along the drum's axis (y), each also turned by a seeded half turn about one of its axes or not
+    at all, on a lattice of their boxes 1 mm apart inside the drum (clear of the lifters and the end caps), a seeded
+    choice of its nodes: no two boxes overlap, so the horses start apart, at rest."""
+    rng = np.random.default_rng(seed)
+    half = np.abs(np.asarray(meshes(["horse"])["horse"].vertices)).max(axis=0)[[0, 2, 1]]  # in the drum's frame
+    spacing = 2 * half + 1e-3
+    inside = DRUM_RADIUS - LIFTER_HEIGHT - 1e-3
+    grid = [spacing[k] * (np.arange(-10, 11) + 0.5 * (k != 1)) for k in range(3)]
+    nodes = np.array([(x, y, z) for x in grid[0] for y in grid[1] for z in grid[2]
+                      if abs(y) + half[1] <= DRUM_LENGTH / 2 - 1e-3
+                      and math.hypot(abs(x) + half[0], abs(z) + half[2]) <= inside])
+    if len(nodes) < HORSES:
+        raise RuntimeError(f"placement: the lattice has {len(nodes)} nodes for {HORSES} horses")
+    chosen = nodes[rng.permutation(len(nodes))[:HORSES]]
+    z_along_y = np.array([math.sqrt(0.5), -math.sqrt(0.5), 0, 0])  # a quarter turn about x: z -> y
+    turns = np.eye(4)  # none, or a half turn about x, y or z (w, x, y, z)
+    return [("horse", node, _product(z_along_y, turns[rng.integers(4)])) for node in chosen]
 
 
 def kinds(seed):
@@ -289,7 +334,7 @@ def reach(kind):
     """How far the body of `kind` reaches from its centre [m]."""
     if kind == "sphere":
         return SPHERE_RADIUS
-    return float(np.linalg.norm(np.array(meshes()[kind].vertices), axis=1).max())
+    return float(np.linalg.norm(np.array(meshes([kind])[kind].vertices), axis=1).max())
 
 
 def lattice(seed):
@@ -373,7 +418,7 @@ def _grow(poses, log):
 def _add_bodies(poses, body_material, scale=1.0):
     """Appends the rounded bodies and sphere bodies at `poses`, their meshes and radii times `scale`; returns
     their ids."""
-    shapes = meshes()
+    shapes = meshes({kind for kind, _, _ in poses if kind != "sphere"})
     if scale != 1.0:
         shapes = {name: rm.Mesh.from_arrays(np.array(m.vertices) * scale, np.array(m.triangles))
                   for name, m in shapes.items()}
@@ -735,7 +780,7 @@ def main(argv):
             initial_poses(args.seed, args.out, start_overlap=args.start_overlap)
             print(f"wrote {placement_path(args.out, args.seed, args.start_overlap)}")
             return
-        result = run(args)
+        result = run(args, horse_poses(args.seed) if args.contents == "horses" else None)
     except RuntimeError as error:  # the placement failed
         raise SystemExit(f"S7 drum: {reason(error)}")
     log = print

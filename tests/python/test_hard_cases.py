@@ -8,6 +8,7 @@ pass through each other"). It is kept as an expected failure, strict: the day it
 mark is removed."""
 import csv
 import importlib.util
+import math
 import os
 import subprocess
 
@@ -34,14 +35,20 @@ def test_the_short_form_passes(tmp_path):
 
 
 def test_the_coarse_meshes_and_the_report(tmp_path):
-    """The coarse meshes are what S8 says: the bar and the plate have 12 triangles, the coarsened bear about 150
-    nodes; the report writes one row per check and its picture, and names the failures."""
+    """The coarse meshes are what S8 says: the bar and the plate are given as 12 triangles and made as rm.Mesh makes
+    them, within its tolerance of 0.05 r_eq, the coarsened bear has about 150 nodes; the report writes one row per
+    check and its picture, and names the failures."""
     spec = importlib.util.spec_from_file_location("hard_cases", SCRIPT)
     hard_cases = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(hard_cases)
     meshes = hard_cases.coarse_meshes()
     sizes = {name: (len(m.vertices), len(m.triangles)) for name, m in meshes.items()}
-    assert sizes["12-triangle bar 2 x 2 x 5 cm"] == (8, 12) and sizes["sliver plate 1 x 20 x 50 mm"] == (8, 12)
+    for size in ((0.02, 0.02, 0.05), (0.001, 0.02, 0.05)):
+        vertices, triangles = hard_cases.box_arrays(*size)
+        assert vertices.shape == (8, 3) and triangles.shape == (12, 3)
+    for name in ("12-triangle bar 2 x 2 x 5 cm", "sliver plate 1 x 20 x 50 mm"):
+        mesh = meshes[name]
+        assert mesh.deviation <= 0.05 * (3 * mesh.volume / (4 * math.pi)) ** (1 / 3) * (1 + 1e-12)
     assert 140 <= sizes["gummy bear of 150 nodes"][0] <= 160
     report = hard_cases.Report()
     report.add("coarse", "a check that passes", True, 0.0, 1.0, "N", "", 0.1)

@@ -51,3 +51,32 @@ def test_per_triangle_arrays_describe_the_encompassing_spheres():
     np.testing.assert_allclose(np.linalg.norm(mesh.normals, axis=1), 1.0, rtol=1e-14)
     assert mesh.areas.sum() < 4 * math.pi
     assert mesh.areas.sum() == pytest.approx(4 * math.pi, rel=0.02)
+
+
+# Mesh.centroid and Mesh.orientation map the principal frame back to the frame the mesh was given in, whatever made
+# it: a generated gummy bear (given in the frame of shapes.json; Mesh.save writes it there) and that bear's surface
+# turned and shifted, written, then loaded, placed in a YADE scene by them, each lie where its vertices were given.
+def test_loaded_and_generated_bodies_are_placed_where_they_were_given(tmp_path):
+    from yade import O
+
+    def obj_vertices(path):
+        with open(path) as f:
+            return np.array([[float(x) for x in line.split()[1:4]] for line in f if line.startswith("v ")])
+
+    bear = rm.Mesh.reference_shape("gummy_bear")
+    bear.save(str(tmp_path / "generated.obj"))
+    turn = Quaternion(Vector3(1, -2, 0.5).normalized(), 2.1)
+    given = bear.vertices @ np.array(turn.toRotationMatrix()).T + [0.3, -0.1, 0.05]
+    rm.Mesh(given, bear.triangles, radius=bear.radii).save(str(tmp_path / "turned.obj"))
+    loaded = rm.Mesh.load(str(tmp_path / "turned.obj"))
+    assert loaded.remesh_passes == 0  # within the tolerance: loaded as it is
+    material = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000)
+    O.reset()
+    try:
+        for mesh, path in ((bear, "generated.obj"), (loaded, "turned.obj")):
+            body = O.bodies[rm.add_body(mesh, pos=tuple(mesh.centroid), ori=mesh.orientation, material=material)]
+            world = mesh.vertices @ np.array(body.state.ori.toRotationMatrix()).T + np.array(body.state.pos)
+            expected = obj_vertices(str(tmp_path / path))
+            np.testing.assert_allclose(world[np.lexsort(world.T)], expected[np.lexsort(expected.T)], atol=1e-12)
+    finally:
+        O.reset()
