@@ -12,6 +12,8 @@
 // and lowers its principal curvatures to at most 1/R, so that the contact there sees the surface the mesh describes
 // (nearly flat facets) rather than a curvature the mesh cannot carry. Triangles already within hMax keep their radius
 // and curvatures exactly.
+// (RoundedTriangle::capHeight, the cap over the whole circumcircle, is the larger bound that the triangles' boxes use;
+// for a triangle that holds its circumcentre the two are equal.)
 // Inputs: the surface [m], one contact radius per triangle [m] (Curvature.hpp: contactRadii), the principal
 // curvatures per triangle [1/m] (may be empty), hMax [m] > 0. Output: how many triangles were raised.
 #pragma once

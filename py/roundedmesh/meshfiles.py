@@ -84,7 +84,7 @@ def load(path, scale=1.0, radius=None, max_radius=None, fill_holes=False, tolera
 load.__doc__ = "\n".join(_load.__doc__.split("C++ signature")[0].strip().splitlines()[1:]).rstrip() + (
     "\n    Warns (RuntimeWarning) when the body's volume-equivalent radius is outside 0.5 mm to 10 m, what a file in\n"
     "    millimetres loaded without scale=0.001 (or a scale applied twice) gives (roundedmesh.meshfiles.PLAUSIBLE_RADII);\n"
-    "    in one line when caps\n"
-    "    were bounded to the tolerance; and, where they were not (tolerance=None, prescribed radius), when a\n"
-    "    triangle's cap is taller than 0.05 r_eq, naming the worst triangles (Mesh.cap_heights). mesh.load_report\n"
-    "    says what was made: nodes, triangles, curvature source, tolerance, bounded caps, deviation.\n")
+    "    in one line when the mesh was remeshed or its caps bounded to the tolerance; and, where the caps were not\n"
+    "    prepared (tolerance=None, prescribed radius), when a triangle's cap is taller than 0.05 r_eq, naming the worst\n"
+    "    triangles (Mesh.cap_heights). mesh.load_report says what was made: nodes, triangles, curvature source,\n"
+    "    tolerance, remeshing passes and edge length, bounded caps, deviation.\n")
