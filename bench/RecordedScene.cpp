@@ -111,6 +111,12 @@ void RecordedScene::setStates(ContactData& data, const Trajectory& trajectory, i
   data.partnerStates[0] = frame.back();
 }
 
+int frameAt(long step, int frames) {
+  const long period = 2 * (frames - 1);
+  const long k = step % period;
+  return static_cast<int>(k < frames ? k : period - k);
+}
+
 RecordedScene loadRecordedScene(const std::string& folder) {
   RecordedScene scene;
   const BodyMesh bear = readMesh(folder + "/gummy_bear.mesh");

@@ -25,6 +25,10 @@ struct RecordedScene {
   void setStates(ContactData& data, const Trajectory& trajectory, int k) const;
 };
 
+// Frames 0, 1, ..., n-1, n-2, ..., 1, 0, 1, ... of a trajectory of n frames at steps 0, 1, 2, ...: the recorded
+// motion forth and back, without a jump.
+int frameAt(long step, int frames);
+
 // Reads bench/data (ROUNDEDMESH_BENCH_DATA at build time, or `folder`). Throws std::runtime_error naming the
 // file on a missing or malformed one.
 RecordedScene loadRecordedScene(const std::string& folder = ROUNDEDMESH_BENCH_DATA);

@@ -17,14 +17,11 @@
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
-#include <cstdint>
-#include <cstdlib>
-#include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "bench/RecordedScene.hpp"
+#include "bench/ThreadCounts.hpp"
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/PairLoad.hpp"
 #include "pkg/engine/ContactStep.hpp"
@@ -50,32 +47,6 @@ ContactModel withFriction(ContactModel model, long friction) {
     partner.material.tangentialDamping = 10;
   }
   return model;
-}
-
-// The thread counts to measure: ROUNDEDMESH_BENCH_THREADS, or 1 and 2. Exits naming the variable on a bad list.
-std::vector<std::int64_t> threadCounts() {
-  const char* listed = std::getenv("ROUNDEDMESH_BENCH_THREADS");
-  if (!listed) return {1, 2};
-  std::vector<std::int64_t> counts;
-  std::stringstream items(listed);
-  for (std::string item; std::getline(items, item, ',');) {
-    char* end = nullptr;
-    const long count = std::strtol(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0' || count < 1 || count > 1024) {
-      std::cerr << "ROUNDEDMESH_BENCH_THREADS: expected thread counts from 1 to 1024 separated by commas, got '"
-                << listed << "'\n";
-      std::exit(2);
-    }
-    counts.push_back(count);
-  }
-  return counts;
-}
-
-// Frames 0, 1, ..., n-1, n-2, ..., 1, 0, 1, ...: the recorded motion without a jump.
-int frameAt(long step, int frames) {
-  const long period = 2 * (frames - 1);
-  const long k = step % period;
-  return static_cast<int>(k < frames ? k : period - k);
 }
 
 void BM_S1Step(benchmark::State& state) {
@@ -131,7 +102,7 @@ void BM_S1Step(benchmark::State& state) {
                  (state.range(5) == 1 ? ", spring" : state.range(5) == 2 ? ", viscous" : "") +
                  (state.range(6) == 1 ? ", principal curvatures" : ""));
 }
-BENCHMARK(BM_S1Step)->ArgsProduct({threadCounts(), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // With friction: the spring and the viscous law.
 BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {0}, {0}, {0}, {1, 2}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // The ellipse of both principal curvatures (issue 13), settled and resting, frictionless and with the spring.
