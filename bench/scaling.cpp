@@ -70,7 +70,8 @@ struct Scene {
   size_t meshBytes = 0;
 };
 
-// side^3 bodies on the lattice; nodes 0: perfect spheres, else the icosphere of that many nodes.
+// side^3 bodies on the lattice: perfect spheres for subdivisions < 0, else icospheres of that many subdivisions
+// (0-3: 12, 42, 162, 642 nodes).
 Scene lattice(int side, int subdivisions) {
   Scene scene;
   std::shared_ptr<const RoundedMesh> mesh;
@@ -87,17 +88,15 @@ Scene lattice(int side, int subdivisions) {
         BodyState state;
         state.position = spacing * Vector3r(i, j, k);
         state.orientation = Quaternionr(gauss(random), gauss(random), gauss(random), gauss(random)).normalized();
-        const int id = static_cast<int>(scene.bodyStates.size() + scene.partnerStates.size());
+        const int id = static_cast<int>(scene.bodies++);
         if (mesh) {
           scene.model.bodies.push_back({id, mesh, kMaterial, kRadius});
           scene.bodyStates.push_back(state);
           scene.primitives += mesh->triangleCount();
-          ++scene.bodies;
         } else {
           scene.model.partners.push_back({id, Sphere{kRadius}, kMaterial, true});
           scene.partnerStates.push_back(state);
           ++scene.primitives;
-          ++scene.bodies;
         }
       }
   return scene;
