@@ -5,6 +5,8 @@
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +49,32 @@ TriangleSurface remeshedSurface(const TriangleSurface& surface, Real edgeLength,
     soup.polygons.push_back(std::move(corners));
   }
   return repairedSurface(soup);
+}
+
+TriangleSurface remeshedToNodes(const TriangleSurface& surface, int nodes) {
+  if (nodes < 4 || nodes > 200000) throw std::invalid_argument("nodes must be in [4, 200000], got " + std::to_string(nodes));
+  Real area = 0;
+  for (Real a : triangleAreas(surface)) area += a;
+  Real edgeLength = std::sqrt(2 * area / (std::sqrt(Real(3)) * nodes));
+  TriangleSurface best;
+  std::string failure;
+  for (int attempt = 0; attempt < 4; ++attempt, edgeLength *= Real(0.97)) {
+    TriangleSurface remeshed;
+    try {
+      remeshed = remeshedSurface(surface, edgeLength);
+    } catch (const std::invalid_argument& e) {  // a collapse left a degenerate triangle: another length may not
+      failure = e.what();
+      continue;
+    }
+    const Real ratio = Real(remeshed.vertices.size()) / nodes;
+    if (best.vertices.empty() || std::abs(ratio - 1) < std::abs(Real(best.vertices.size()) / nodes - 1))
+      best = std::move(remeshed);
+    if (std::abs(ratio - 1) <= 0.05) break;
+    edgeLength *= std::sqrt(ratio);
+  }
+  if (best.vertices.empty())
+    throw std::invalid_argument("remeshing to " + std::to_string(nodes) + " nodes failed at every edge length: " + failure);
+  return best;
 }
 
 }  // namespace roundedmesh

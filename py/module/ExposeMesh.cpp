@@ -10,6 +10,9 @@
 #include "pkg/io/MeshFile.hpp"
 #include "pkg/meshing/ImplicitCurvature.hpp"
 #include "pkg/meshing/BlendedShape.hpp"
+#include "pkg/meshing/RoundedTetrahedron.hpp"
+#include "pkg/meshing/Superellipsoid.hpp"
+#include "pkg/meshing/SurfaceRemesher.hpp"
 #include "pkg/shape/BodyMesh.hpp"
 #include "pkg/shape/CapTolerance.hpp"
 #include "pkg/shape/Curvature.hpp"
@@ -103,6 +106,15 @@ MeshPtr makeCylinder(Real radius, Real length, int nodes, const std::string& cur
 
 // Mesh._blended_shape(blend, primitives, nodes, volume): primitives as (a, b, radius) triples in shape units;
 // returns (mesh, scale). roundedmesh.Mesh.reference_shape reads them from shapes.json.
+// A mesh of an implicit solid's surface `s` (scaled by `scale` [m per shape unit]) with its curvature 'computed'
+// (Eq. 1) or 'exact' (f's shape operator under each triangle, ImplicitCurvature.hpp).
+MeshPtr implicitGenerated(const ImplicitSolid& solid, const TriangleSurface& s, Real scale, const std::string& curvature) {
+  if (curvature == "computed") return std::make_shared<BodyMesh>(s, std::nullopt);
+  if (curvature != "exact") raiseValueError("curvature must be 'exact' or 'computed', got '" + curvature + "'");
+  SurfaceCurvatures exact = implicitSurfaceCurvatures(solid, s, scale, 1e-4 * solid.thickness);
+  return std::make_shared<BodyMesh>(s, std::move(exact.mean), std::nullopt, std::move(exact.principal));
+}
+
 bp::tuple makeBlendedShape(Real blend, const bp::list& primitives, int nodes, Real volume, const std::string& curvature) {
   BlendedShape shape{blend, {}};
   for (int i = 0; i < bp::len(primitives); ++i) {
@@ -111,12 +123,25 @@ bp::tuple makeBlendedShape(Real blend, const bp::list& primitives, int nodes, Re
   }
   Real scale = 0;
   const TriangleSurface s = blendedShapeSurface(shape, nodes, volume, &scale);
-  if (curvature == "computed") return bp::make_tuple(std::make_shared<BodyMesh>(s, std::nullopt), scale);
-  if (curvature != "exact") raiseValueError("curvature must be 'exact' or 'computed', got '" + curvature + "'");
-  const ImplicitSolid solid = implicitSolid(shape);
-  SurfaceCurvatures exact = implicitSurfaceCurvatures(solid, s, scale, 1e-4 * solid.thickness);
-  return bp::make_tuple(std::make_shared<BodyMesh>(s, std::move(exact.mean), std::nullopt, std::move(exact.principal)),
-                        scale);
+  return bp::make_tuple(implicitGenerated(implicitSolid(shape), s, scale, curvature), scale);
+}
+
+MeshPtr makeImplicit(const ImplicitSolid& solid, int nodes, const std::string& curvature) {
+  return implicitGenerated(solid, meshImplicitSurface(solid, nodes), 1, curvature);
+}
+
+MeshPtr makeSuperellipsoid(Real a, Real b, Real c, Real exponent, int nodes, const std::string& curvature) {
+  return makeImplicit(implicitSolid(Superellipsoid{a, b, c, exponent}), nodes, curvature);
+}
+
+MeshPtr makeRoundedTetrahedron(Real inradius, Real rounding, int nodes, const std::string& curvature) {
+  return makeImplicit(implicitSolid(RoundedTetrahedron{inradius, rounding}), nodes, curvature);
+}
+
+// Mesh.remeshed(nodes): the surface, in its input frame, remeshed to about `nodes` nodes, curvature computed.
+MeshPtr remeshed(const BodyMesh& mesh, int nodes) {
+  return std::make_shared<BodyMesh>(remeshedToNodes(mesh.inputFrameSurface(), nodes), std::nullopt, std::nullopt,
+                                    std::nullopt, CapPolicy{kDefaultCapTolerance, true});
 }
 
 template <class Value>
@@ -278,6 +303,28 @@ void exposeMesh() {
            "`nodes` nodes (within 3 % from 100 nodes on). curvature: 'exact'\n"
            "(mean curvature 1/(2 radius) on the hull, flat caps) or 'computed' (Eq. 1 from the mesh).")
       .staticmethod("cylinder")
+      .def("superellipsoid", &makeSuperellipsoid,
+           (bp::arg("a"), bp::arg("b"), bp::arg("c"), bp::arg("exponent"), bp::arg("nodes"), bp::arg("curvature") = "exact"),
+           "Superellipsoid |x/a|^p + |y/b|^p + |z/c|^p = 1 (Barr 1981): semi-axes a, b, c [m], exponent p >= 2 (2 an\n"
+           "ellipsoid; 3-8 a pill or rounded box, flatter faces and tighter edges as p grows), about `nodes` nodes\n"
+           "(typically within 2 %), near-equilateral triangles, every node on the surface. Volume\n"
+           "8 a b c Gamma(1 + 1/p)^3 / Gamma(1 + 3/p). curvature: 'exact' (mean and principal curvatures of the smooth\n"
+           "surface under each triangle) or 'computed' (Eq. 1 from the mesh).")
+      .staticmethod("superellipsoid")
+      .def("rounded_tetrahedron", &makeRoundedTetrahedron,
+           (bp::arg("inradius"), bp::arg("rounding"), bp::arg("nodes"), bp::arg("curvature") = "exact"),
+           "A rounded tetrahedral grain: the smooth maximum s ln sum_i exp(n_i . x / s) = h of the face planes of a\n"
+           "regular tetrahedron of inradius h [m] (`inradius`), rounded over the length s [m] (`rounding`, in\n"
+           "(0, h / ln 3)): strictly convex, nearly flat faces, rounded edges, tight corners. About `nodes` nodes;\n"
+           "curvature 'exact' or 'computed' as for superellipsoid.")
+      .staticmethod("rounded_tetrahedron")
+      .def("remeshed", &remeshed, bp::arg("nodes"),
+           "mesh.remeshed(nodes) -> Mesh: the same surface remeshed with CGAL's isotropic remeshing to about `nodes`\n"
+           "nodes (within 10 % from 300 nodes on; coarser targets and kept sharp edges leave more), curvature computed\n"
+           "(Eq. 1), caps held within "
+           "the default tolerance as Mesh.load does. New nodes lie on the old surface: coarsening a fine mesh keeps its\n"
+           "shape; refining a coarse one adds nodes on its flat triangles, and the curvature computed from it then\n"
+           "concentrates on the old edges (it cannot recover a smooth shape the mesh does not hold).")
       .def("_blended_shape", &makeBlendedShape,
            (bp::arg("blend"), bp::arg("primitives"), bp::arg("nodes"), bp::arg("volume"), bp::arg("curvature") = "computed"),
            "Mesh._blended_shape(blend, primitives, nodes, volume, curvature='computed') -> (mesh, scale); see\n"
