@@ -39,18 +39,35 @@ import sys
 import numpy as np
 
 from roundedmesh.export import write_csv
-from roundedmesh.study import shape_error as se
+from roundedmesh.study import grains, shape_error as se
 from roundedmesh.study.validation import pair_poses
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
-SHAPES = ("sphere", "pear", "gummy_bear")
+SHAPES = ("sphere", "pear", "gummy_bear", "spheroid", "pill", "tetra_grain")
 FAMILIES = ("roundedmesh", "clumps", "level_sets")
 MESH_NODES = {"sphere": (42, 162, 642, 2562), "pear": (150, 300, 486, 1100, 2200),
-              "gummy_bear": (150, 300, 554, 1100, 2200)}
-CLUMP_COUNTS = {"sphere": (1,), "pear": (2,), "gummy_bear": (10, 20, 40, 80)}
+              "gummy_bear": (150, 300, 554, 1100, 2200), **{g: (150, 300, 600, 1100, 2200) for g in grains.NAMES}}
+CLUMP_COUNTS = {"sphere": (1,), "pear": (2,), "gummy_bear": (10, 20, 40, 80),
+                **{g: (10, 20, 40, 80, 160) for g in grains.NAMES}}
+# The pear's and the gummy bear's clumps are their primitives (exact on them); a user with a mesh fills it instead
+# (peers.clump_spheres, method 'fill'), as every grain's clump is.
+FILLED_TOO, FILL_COUNTS = ("pear", "gummy_bear"), (10, 20, 40, 80, 160)
 LEVEL_SETS = ((2e-3, 255), (1e-3, 511), (1e-3, 2047), (0.5e-3, 2047))   # (grid spacing [m], surface nodes)
 REASONS = ("concave", "flat", "crease", "second contact")
+# The contact law's options (rm.engine): (mesh curvature, regime, law curvature, normal). The regimes only with the
+# defaults of the rest; the ellipse and the energy normal only in the default regime.
+VARIANTS = (("computed", "auto", "mean", "pressure"), ("computed", "quadrature", "mean", "pressure"),
+            ("computed", "direct", "mean", "pressure"), ("computed", "exact", "mean", "pressure"),
+            ("computed", "auto", "principal", "pressure"),
+            ("computed", "auto", "mean", "energy"), ("prescribed", "auto", "mean", "pressure"),
+            ("prescribed", "auto", "principal", "pressure"))
+
+
+def variant_label(curvature, regime, law_curvature, normal):
+    """'curvature computed, auto' for the law's defaults, then ', principal' (Hertz's ellipse) or ', energy'."""
+    return ", ".join([f"curvature {curvature}", regime] + ([law_curvature] if law_curvature != "mean" else [])
+                     + ([normal] if normal != "pressure" else []))
 
 
 def configurations(shape, family, quick):
@@ -60,18 +77,17 @@ def configurations(shape, family, quick):
         nodes = MESH_NODES[shape]
         if quick:
             nodes = nodes[1:4:2]
-        variants = ((("computed", "auto"),) if quick else
-                    (("computed", "auto"), ("computed", "quadrature"), ("computed", "direct"),
-                     ("prescribed", "auto")))
-        for curvature, regime in variants:
+        for variant in VARIANTS[:1] if quick else VARIANTS:
             for n in nodes:
-                result.append((f"curvature {curvature}, {regime}", n,
-                               lambda n=n, c=curvature, r=regime: se.rounded_mesh(shape, n, c, r)))
+                result.append((variant_label(*variant), n, lambda n=n, v=variant: se.rounded_mesh(shape, n, *v)))
     elif family == "clumps":
         counts = CLUMP_COUNTS[shape]
         for count in (counts[1:3] if quick and len(counts) > 2 else counts):
             label = "sphere" if shape == "sphere" else "clump"
             result.append((label, count, lambda c=count: se.Clump(shape, c)))
+        if shape in FILLED_TOO:   # shapes.json's: the clump a user builds from the mesh, beside the one of primitives
+            for count in (FILL_COUNTS[1:2] if quick else FILL_COUNTS):
+                result.append(("clump, sphere fill", count, lambda c=count: se.Clump(shape, c, "fill")))
     elif family == "level_sets" and shape != "sphere":
         for spacing, nodes in (LEVEL_SETS[:2] if quick else LEVEL_SETS):
             result.append((f"level set, grid {spacing * 1e3:g} mm", nodes,
@@ -80,26 +96,30 @@ def configurations(shape, family, quick):
 
 
 def run_part(shape, family, poses, quick, output):
-    """Errors of every configuration of `family` for `shape`, per pose and partner; writes the part's CSV."""
-    rows = []
+    """Errors of every configuration of `family` for `shape`, per pose and partner; writes the part's CSV. The
+    reference of each pose (Hertz, or the half-space solution) is computed once, on the shape's common frame."""
     common = se.SmoothShape(shape)
+    references = {}
+    for partner in se.PARTNERS:
+        for index, (upper, lower) in enumerate(poses):
+            geometry = se.press_geometry(common, upper, None if partner == "plane" else lower)
+            references[partner, index] = (geometry, None if geometry.left_out else geometry.reference(se.overlaps()))
+    rows = []
     for label, size, factory in configurations(shape, family, quick):
         representation = factory()
-        for partner in se.PARTNERS:
-            for index, (upper, lower) in enumerate(poses):
-                lower = None if partner == "plane" else lower
-                left_out = se.press_geometry(common, upper, lower).left_out
-                row = {"shape": shape, "family": family, "configuration": label, "size": size, "partner": partner,
-                       "pose": index, "left_out": left_out or ""}
-                if left_out is None:
-                    geometry = se.press_geometry(representation.shape, upper, lower)
-                    error, angle, _ = se.pose_errors(representation, geometry)
-                    row.update(nrmse=error, angle=angle, r_major=geometry.r_major, r_minor=geometry.r_minor)
-                rows.append(row)
+        for (partner, index), (reference, forces) in references.items():
+            upper, lower = poses[index]
+            row = {"shape": shape, "family": family, "configuration": label, "size": size, "partner": partner,
+                   "pose": index, "left_out": reference.left_out or "", "reference": reference.reference_kind}
+            if reference.left_out is None:
+                geometry = se.press_geometry(representation.shape, upper, None if partner == "plane" else lower)
+                error, angle, _ = se.pose_errors(representation, geometry, reference=forces)
+                row.update(nrmse=error, angle=angle, r_major=geometry.r_major, r_minor=geometry.r_minor)
+            rows.append(row)
         print(f"{shape:10s} {family:11s} {label:34s} {size:5d} done", flush=True)
     os.makedirs(os.path.join(output, "parts"), exist_ok=True)
     columns = ["shape", "family", "configuration", "size", "partner", "pose", "left_out", "nrmse", "angle",
-               "r_major", "r_minor"]
+               "r_major", "r_minor", "reference"]
     write_csv(os.path.join(output, "parts", f"{shape}_{family}.csv"), columns,
               [[row.get(c, "") for c in columns] for row in rows])
 

@@ -79,7 +79,7 @@ def contact_pose(ratio, count, seed, nodes):
         q = Quaternion(*rng.normal(size=4))
         q.normalize()
         geometry = press_geometry(shape, q)
-        if geometry.left_out or not math.isfinite(geometry.r_major):
+        if geometry.left_out or geometry.reference_kind != "hertz" or not math.isfinite(geometry.r_major):
             continue
         miss = abs(geometry.r_major / geometry.r_minor - ratio)
         if best is None or miss < best[0]:

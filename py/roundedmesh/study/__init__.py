@@ -11,19 +11,24 @@ or use it as an attribute, which imports the module on first use: `import rounde
                       the gummy bear), the reference of the speed-against-error study
     validation        the body-body scenes (S2 pairs, S5) pressed together, against Hertz (doc/validation.md)
     scenes            the reference scenes S2, S3, S4 and the slope, built in O (doc/scenes.md)
-    shape_error       the force error of a meshed shape and of YADE's representations against Hertz
-                      (doc/speed-vs-error.md)
-    model_choice      the cheapest model that meets a force error; rm.cheapest_model is its user entry point
+    shape_error       the force error of a meshed shape and of YADE's representations against Hertz or the
+                      half-space solution (doc/speed-vs-error.md)
+    halfspace         the elastic half-space contact of any gap, the reference where Hertz does not hold
+    grains            the study's shapes not made of spheres: a spheroid, a pill, a rounded tetrahedral grain
+    model_choice      the cheapest model that meets a force error, for a study shape or any mesh; rm.cheapest_model
+                      is its user entry point
     peers             YADE's own representations of the reference shapes (clumps, level sets, spheres) for S1
                       (doc/s1-packing.md)
+    sphere_fill       a clump for any mesh: the greedy inscribed-sphere fill
+    mesh_distance     the exact signed distance to a closed triangle mesh (level sets and fills of any mesh)
     benchmarking      the machine's description and step timings for the benchmark scripts (doc/benchmarks.md)
 
 The scripts that use them are in scripts/validation, scripts/studies and scripts/benchmarks (scripts/README.md).
 """
 import importlib
 
-MODULES = ("analytic", "benchmarking", "hertz_reference", "model_choice", "peers", "scenes", "shape_error",
-           "validation")
+MODULES = ("analytic", "benchmarking", "grains", "halfspace", "hertz_reference", "mesh_distance", "model_choice",
+           "peers", "scenes", "shape_error", "sphere_fill", "validation")
 
 
 def __getattr__(name):

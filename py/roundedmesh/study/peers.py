@@ -7,7 +7,9 @@ built with YADE's Hertz-Mindlin contact law at the poses of the rounded bodies.
     body_frame(name, nodes, curvature) the mesh, scale and frame of Mesh.reference_shape(name, nodes, curvature)
     mindlin_betan()                   YADE's damping ratio betan matched to the paper's Eq. 7 (dimensionless)
     add_clump(centres, radii, ...)    one clump of clump_spheres at a pose
-    level_set_shape(name, ...)        the shape's YADE LevelSet
+    level_set_from_distance(distance, low, high, ...)  a YADE LevelSet of any signed distance function
+    level_set_shape(name, ...)        the shape's YADE LevelSet (from shape_distance)
+    level_set_from_mesh(vertices, triangles, ...)  a YADE LevelSet of any closed triangle mesh
     add_level_set_body(shape, ...)    one level-set body at a pose
     build_clumps(poses, count)        S1's box and one clump per pose (resets O)
     build_level_sets(poses, ...)      S1's box and one level-set body per pose (resets O)
@@ -43,6 +45,7 @@ m* = m/2 bear-bear, m bear-wall. A settled packing's contacts carry from one to 
 delta^(1/4): ten times the overlap is 1.8 times the ratio. betas = 0: S1 has no friction, and with friction angle
 0 YADE's shear force is zero anyway.
 """
+import functools
 import itertools
 import math
 
@@ -56,6 +59,9 @@ from yade.minieigenHP import Matrix3, Quaternion, Vector3, Vector3i
 
 from .. import scene, shapes
 from .._core import HertzMaterial
+from . import grains
+from .mesh_distance import signed_distance
+from .sphere_fill import inscribed_spheres
 
 # Scene S1 (doc/scenes.md)
 RADIUS = 0.025                 # volume-equivalent radius r [m]
@@ -73,7 +79,12 @@ CLUMP_COUNTS = (10, 20, 40, 80)  # sphere counts of the speed-against-error stud
 def body_frame(name, nodes=None, curvature="computed"):
     """(mesh, scale [m/unit], R (3, 3), centroid (3,) [m]) of Mesh.reference_shape(name, nodes, curvature): input
     point = R body point + centroid = scale x. curvature only sets the mesh's per-triangle curvatures (as for
-    reference_shape); the vertices, scale and frame are the same for both."""
+    reference_shape); the vertices, scale and frame are the same for both. For a study grain (grains.NAMES) the
+    mesh Grain.mesh(nodes, curvature: 'computed' or 'exact'), default grains.REFERENCE_NODES nodes, and the
+    grain's own frame as the input frame (scale 1)."""
+    if name in grains.NAMES:
+        mesh = grains.grain(name).mesh(grains.REFERENCE_NODES if nodes is None else nodes, curvature)
+        return mesh, 1.0, np.array(mesh.orientation.toRotationMatrix()), np.array(mesh.centroid)
     mesh, scale = shapes.mesh_with_scale(name, nodes, curvature)
     return mesh, scale, np.array(mesh.orientation.toRotationMatrix()), np.array(mesh.centroid)
 
@@ -103,7 +114,22 @@ def _chain_counts(lengths, radii, budget):
     return per_capsule
 
 
-def clump_spheres(name="gummy_bear", count=40):
+def fill_surface(name, nodes=2200):
+    """(vertices (n, 3) [m], triangles (m, 3)) of the shape's `nodes`-node mesh in the body frame of the peers
+    (body_frame(name)): what a clump is filled from and a grain's level set is built from."""
+    if name in grains.NAMES:
+        return grains.grain(name).surface(nodes, frame="reference")
+    mesh, scale, rotation, centroid = body_frame(name, nodes)
+    _, paper_scale, paper_rotation, paper_centroid = body_frame(name)
+    units = (np.array(mesh.vertices) @ rotation.T + centroid) / scale
+    return (paper_scale * units - paper_centroid) @ paper_rotation, np.array(mesh.triangles)
+
+
+CLUMP_METHODS = ("primitives", "fill")
+
+
+@functools.lru_cache(maxsize=None)
+def clump_spheres(name="gummy_bear", count=40, method=None):
     """(centres (n, 3) [m], radii (n,) [m]): a clump of n = `count` spheres standing for the reference shape
     `name`, in the principal (body) frame of Mesh.reference_shape(name).
 
@@ -115,7 +141,16 @@ def clump_spheres(name="gummy_bear", count=40):
     (module docstring). The union of the spheres lacks the shape's blends (smooth minimum) and is scalloped
     between chain spheres; against the smooth surface f = 0 its volume is -1.2 % at 80 spheres, -1.7 % at 40,
     -13 % at 20 and -47 % at 10 (one sphere per capsule). Against the 554-node mesh, inscribed in f = 0 and
-    2.4 % smaller, that is +1.2, +0.7, -11 and -46 %."""
+    2.4 % smaller, that is +1.2, +0.7, -11 and -46 %.
+
+    method 'fill' (the default, and the only method, for a study grain, which has no primitives): the clump a user
+    builds from a mesh, the greedy inscribed-sphere fill of the shape's 2200-node mesh (sphere_fill.inscribed_spheres,
+    fill_surface)."""
+    method = method or ("fill" if name in grains.NAMES else "primitives")
+    if method not in CLUMP_METHODS or (name in grains.NAMES and method != "fill"):
+        raise ValueError(f"method: {method!r} for {name!r}; one of {', '.join(CLUMP_METHODS)} ('fill' for a grain)")
+    if method == "fill":
+        return inscribed_spheres(*fill_surface(name), count)
     definition = shapes.definitions()["shapes"][name]
     _, scale, rotation, centroid = body_frame(name)
     spheres = [p for p in definition["primitives"] if p["type"] == "sphere"]
@@ -298,8 +333,9 @@ def add_clump(centres, radii, position, ori, material, mass, discretization=30):
     return clump, member_ids
 
 
-def build_clumps(poses, count=40, name="gummy_bear", discretization=30):
-    """S1 with one clump of `count` spheres (clump_spheres) per pose (resets O); returns the clumps' ids.
+def build_clumps(poses, count=40, name="gummy_bear", discretization=30, method=None):
+    """S1 with one clump of `count` spheres (clump_spheres, by `method`) per pose (resets O); returns the clumps'
+    ids.
 
     The members stand exactly where the pose puts the shape's primitives. YADE puts the clump's own frame at
     the principal axes of the members' union, integrated on a grid of `discretization` cells across the
@@ -311,8 +347,8 @@ def build_clumps(poses, count=40, name="gummy_bear", discretization=30):
     coefficient (2 betan sqrt(m* k_n)), is set to the clump's, so that betan means for the clump what it means
     for the body (module docstring)."""
     particle, box = _new_scene()
-    centres, radii = clump_spheres(name, count)
-    mass = PARTICLE["density"] * shapes.mesh_with_scale(name)[0].volume
+    centres, radii = clump_spheres(name, count, method)
+    mass = PARTICLE["density"] * body_frame(name)[0].volume
     ids = []
     for pose in poses:
         position, ori, velocity, angular = _pose(pose)
@@ -326,23 +362,49 @@ def build_clumps(poses, count=40, name="gummy_bear", discretization=30):
     return ids
 
 
-def level_set_shape(name="gummy_bear", spacing=1e-3, surface_nodes=511):
-    """A YADE LevelSet of shape `name` in its body frame: shape_distance on a regular grid of `spacing` [m]
-    covering the mesh's box and 3 cells more, and boundary nodes ray-traced by YADE from the origin along
-    `surface_nodes` rays on a spiral (nodesPath = 2). A ray keeps every crossing of the surface: the gummy bear,
-    not star-shaped from its centre, gets 527 nodes from 511 rays (YADE warns about it). At 1 mm the
-    trilinear interpolation of f puts the nodes within 0.06 mm of f = 0."""
-    mesh = shapes.mesh_with_scale(name)[0]
-    vertices = np.array(mesh.vertices)
-    low = vertices.min(axis=0) - 3 * spacing
-    counts = np.ceil((vertices.max(axis=0) + 3 * spacing - low) / spacing).astype(int) + 1
+def level_set_from_distance(distance, low, high, spacing=1e-3, surface_nodes=511):
+    """A YADE LevelSet of any shape given by its signed distance: `distance` maps body-frame points (n, 3) [m] to
+    (n,) signed distances [m], negative inside, and is sampled once on a regular grid of `spacing` [m] that
+    covers the box `low`..`high` (3,) [m] the surface lies in and 3 cells more on every side, so that the grid
+    brackets the surface with outside nodes everywhere. YADE ray-traces the boundary nodes from the body-frame
+    origin along `surface_nodes` rays on a spiral (nodesPath = 2); a ray keeps every crossing of the surface, so
+    a shape that is not star-shaped from the origin gets more nodes than asked for (YADE warns about it)."""
+    low = np.asarray(low, dtype=float) - 3 * spacing
+    counts = np.ceil((np.asarray(high, dtype=float) + 3 * spacing - low) / spacing).astype(int) + 1
     axes = [low[i] + spacing * np.arange(counts[i]) for i in range(3)]
     points = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
-    field = shape_distance(name, points).reshape(*counts)
+    field = np.asarray(distance(points), dtype=float).reshape(*counts)
     grid = RegularGrid(min=Vector3(*low), nGP=Vector3i(*(int(n) for n in counts)), spacing=spacing)
     shape = LevelSet(lsGrid=grid, distField=field.tolist(), nSurfNodes=surface_nodes, nodesPath=2)
     shape.volume()  # LevelSet::init: the surface nodes and the voxel volume, once for every body sharing it
     return shape
+
+
+def level_set_shape(name="gummy_bear", spacing=1e-3, surface_nodes=511):
+    """A YADE LevelSet of shape `name` in its body frame (level_set_from_distance): shape_distance on a regular
+    grid of `spacing` [m] covering the mesh's box and 3 cells more, and `surface_nodes` ray-traced boundary
+    nodes. The gummy bear, not star-shaped from its centre, gets 527 nodes from 511 rays. At 1 mm the trilinear
+    interpolation of f puts the nodes within 0.06 mm of f = 0. A study grain: level_set_from_mesh of its
+    2200-node mesh in the body frame of its reference mesh."""
+    if name in grains.NAMES:
+        return level_set_from_mesh(*fill_surface(name), spacing, surface_nodes)
+    vertices = np.array(shapes.mesh_with_scale(name)[0].vertices)
+    return level_set_from_distance(lambda points: shape_distance(name, points), vertices.min(axis=0),
+                                   vertices.max(axis=0), spacing, surface_nodes)
+
+
+def level_set_from_mesh(vertices, triangles, spacing=1e-3, surface_nodes=511):
+    """A YADE LevelSet of any closed, outward-oriented triangle mesh (`vertices` (v, 3) [m] in the body frame,
+    `triangles` (t, 3) int), as a user would build one from a mesh: the mesh's exact signed distance
+    (mesh_distance.signed_distance) on a grid of `spacing` [m] over the mesh's box and 3 cells more
+    (level_set_from_distance), `surface_nodes` ray-traced boundary nodes. The zero surface is the trilinear
+    interpolation of the exact distance, so it departs from the mesh between grid nodes, most where the mesh
+    has its edges: for Mesh.icosphere(0.025, 3) (1280 triangles) at 1 mm the boundary nodes lie within 0.04 mm
+    of the mesh and LevelSet.volume() is the mesh's to 2e-5 (320 triangles: 0.08 mm, 1.5e-4; at 2 mm, 9e-4).
+    Cost: nearly all in the distances, 4.7 s on one core for that 1280-triangle sphere at 1 mm (57^3 nodes)."""
+    vertices = np.asarray(vertices, dtype=float)
+    return level_set_from_distance(lambda points: signed_distance(vertices, triangles, points),
+                                   vertices.min(axis=0), vertices.max(axis=0), spacing, surface_nodes)
 
 
 def add_level_set_body(shape, position, ori, material, mass, inertia):
@@ -373,7 +435,7 @@ def build_level_sets(poses, name="gummy_bear", spacing=1e-3, surface_nodes=511, 
     distance inflates. Returns the bodies' ids."""
     particle, box = _new_scene()
     shape = level_set_shape(name, spacing, surface_nodes)
-    mesh = shapes.mesh_with_scale(name)[0]
+    mesh = body_frame(name)[0]
     density = PARTICLE["density"]
     ids = []
     for pose in poses:

@@ -1,6 +1,7 @@
-"""The error axis of the speed-against-error study (issue 14; doc/speed-vs-error.md): one representation of a
-smooth shape (sphere, pear, gummy bear) pressed on a rigid plane or on a copy of itself at a random orientation,
-force against overlap, against Hertz's solution at the smooth shape's contact point (hertz_reference).
+"""The error axis of the speed-against-error study (issues 14 and 27; doc/speed-vs-error.md): one representation of
+a smooth shape (sphere, pear, gummy bear, the grains of grains.py) pressed on a rigid plane or on a copy of itself at
+a random orientation, force against overlap, against Hertz's solution at the smooth shape's contact point
+(hertz_reference), or the half-space solution of the shapes' gap where the curvature changes over the contact.
 
     SmoothShape(name, nodes)                the shape f = 0 in the frame of one representation
     press_geometry(shape, upper, lower)     where the bodies touch, the reference radii, and whether Hertz holds
@@ -38,6 +39,7 @@ from yade import (Bo1_LevelSet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, Ig2_LevelSe
                   Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin)
 from yade.minieigenHP import Quaternion, Vector3
 
+from . import grains, halfspace
 from . import hertz_reference as hr
 from . import peers
 from .. import shapes
@@ -76,11 +78,12 @@ def rotation_matrix(q):
 
 @dataclass(frozen=True)
 class SmoothShape:
-    """The smooth shape `name` ('sphere', 'pear', 'gummy_bear') in the body frame of a representation: the
-    sphere |x| - r of radius r = RADIUS about the origin, or f = 0 of shapes.json in the frame and at the scale of
-    Mesh.reference_shape(name, nodes) (peers.shape_distance; nodes None is the paper's count, the frame of the
-    clumps and level sets), optionally seen from a frame turned by `rotation` and moved by `offset` from it
-    (a mesh rebuilt from that mesh's nodes: x_reference = rotation x + offset)."""
+    """The smooth shape `name` ('sphere', 'pear', 'gummy_bear', or a study grain: grains.NAMES) in the body frame
+    of a representation: the sphere |x| - r of radius r = RADIUS about the origin; f = 0 of shapes.json in the frame
+    and at the scale of Mesh.reference_shape(name, nodes) (peers.shape_distance; nodes None is the paper's count,
+    the frame of the clumps and level sets); a grain's f in its own frame (grains.Grain.distance), which is the
+    frame of its clumps and level sets. Optionally seen from a frame turned by `rotation` and moved by `offset`
+    from it (a mesh in its principal frame: x_reference = rotation x + offset)."""
     name: str
     nodes: int = None
     rotation: tuple = None
@@ -93,6 +96,8 @@ class SmoothShape:
             points = points @ np.asarray(self.rotation).T + np.asarray(self.offset)
         if self.name == "sphere":
             return np.linalg.norm(points, axis=1) - RADIUS
+        if self.name in grains.NAMES:
+            return grains.grain(self.name).distance(points)
         return peers.shape_distance(self.name, points, self.nodes)
 
     def to_common(self):
@@ -101,13 +106,15 @@ class SmoothShape:
         every representation's smooth shape alike. The identity for the sphere."""
         if self.name == "sphere":
             return np.eye(3)
+        if self.name in grains.NAMES:   # the grain's own frame is the common one
+            return np.eye(3) if self.rotation is None else np.asarray(self.rotation)
         own = peers.body_frame(self.name, self.nodes)[2]
         turn = own if self.rotation is None else own @ np.asarray(self.rotation)
         return peers.body_frame(self.name)[2].T @ turn
 
     def samples(self):
         """Points on f = 0 [m], body frame, about 2 mm apart: the nodes of a 2562-node icosphere, or of the
-        2200-node mesh of the shape mapped to this frame through shape units."""
+        2200-node mesh of the shape mapped to this frame (through shape units for shapes.json's)."""
         return _surface_samples(self)
 
 
@@ -115,6 +122,8 @@ class SmoothShape:
 def _surface_samples(shape):
     if shape.name == "sphere":
         points = np.array(Mesh.icosphere(RADIUS, 4).vertices)
+    elif shape.name in grains.NAMES:
+        points = grains.grain(shape.name).surface()[0]
     else:
         fine, fine_scale = shapes.mesh_with_scale(shape.name, 2200)
         _, scale, rotation, centroid = peers.body_frame(shape.name, shape.nodes)
@@ -150,7 +159,10 @@ class PressGeometry:
                                copy stands at the origin
         r_major, r_minor       relative principal radii of the smooth shapes [m] (inf, when 'flat')
         principal              the bodies' principal curvatures at their points [1/m]
-        left_out               None, or why Hertz is no reference here (hertz_reference.hertz_holds)"""
+        reference_kind         'hertz', or 'half-space' where the curvature changes over the contact by more than
+                               hertz_reference.CREASE_TOLERANCE (halfspace_forces)
+        left_out               None, or why neither reference holds here (hertz_reference.hertz_holds:
+                               'concave', 'flat', 'second contact')"""
     shape: SmoothShape
     partner: str
     upper: Quaternion
@@ -161,6 +173,7 @@ class PressGeometry:
     r_major: float = math.nan
     r_minor: float = math.nan
     principal: list = None
+    reference_kind: str = "hertz"
     left_out: str = None
 
     def upper_position(self, overlap):
@@ -168,7 +181,9 @@ class PressGeometry:
         return self.touch_upper - overlap * _Z
 
     def reference(self, deltas):
-        """Hertz's force [N] at the overlaps `deltas` [m]."""
+        """The reference force [N] at the overlaps `deltas` [m]: Hertz's, or the half-space solution's."""
+        if self.reference_kind == "half-space":
+            return halfspace_forces(self, deltas)
         return hr.reference_force(modulus(self.partner), self.r_major, self.r_minor, deltas)
 
 
@@ -223,57 +238,155 @@ def press_geometry(shape, upper, lower=None):
                                                              geometry.r_minor, MAX_OVERLAP)[0]
     second = bool(np.any((gaps < SECOND_CONTACT_GAP) & (far > reach)))
     geometry.left_out = hr.hertz_holds(modulus(geometry.partner), MAX_OVERLAP, bodies, second)
+    if geometry.left_out == "crease":   # the curvature changes over the contact: the half-space solution instead
+        geometry.left_out = "second contact" if second else None
+        geometry.reference_kind = "half-space"
     return geometry
+
+
+# --- the half-space reference, where the curvature changes over the contact ----------------------------------
+
+HALFSPACE_CELLS = 64     # grid cells across the window (tests/python/test_halfspace.py: NRMSE < 0.3 % from 40
+                         # cells across the deepest contact)
+HALFSPACE_FILL = 0.75    # the window is resized until the deepest contact spans this share of it, at most ...
+HALFSPACE_PASSES = 4     # ... this many times
+# The first window at most 0.6 r wide on either side: near a flat point (a pill's face) Hertz's ellipse at the
+# contact point's curvature is unbounded, while the gap's higher orders hold the contact to a part of the body.
+HALFSPACE_MAX_HALF_WIDTH = 0.6 * RADIUS
+
+
+def _surface_heights(distance, to_body, origin, points, below):
+    """Heights z [m] of the body surface over (x, y) `points` (n, 2) [m] near the contact point, global frame:
+    Newton steps along z on f(to_body(x, y, z)) = 0 from the contact point's height `origin`, for the body's lower
+    side (`below` True, f decreasing upward) or its upper side. np.inf (np.-inf for the upper side) where the steps
+    do not find that side of the surface (the column misses the body)."""
+    z = np.full(len(points), origin, dtype=float)
+    step = 1e-7
+
+    def f(heights):
+        return distance(to_body(np.column_stack([points, heights])))
+    for _ in range(40):
+        value = f(z)
+        slope = (f(z + step) - f(z - step)) / (2 * step)
+        slope = np.where(np.abs(slope) > 1e-6, slope, np.nan)
+        z = z - value / slope
+    found = np.isfinite(z) & (np.abs(f(np.nan_to_num(z))) < 1e-10)
+    slope = (f(np.nan_to_num(z) + step) - f(np.nan_to_num(z) - step)) / (2 * step)
+    found &= (slope < 0) if below else (slope > 0)
+    return np.where(found, z, np.inf if below else -np.inf)
+
+
+def contact_gap(geometry, half_width, cells=HALFSPACE_CELLS):
+    """(gap (cells, cells) [m], spacing [m]): the distance along z between the undeformed surfaces of `geometry` at
+    first touch over a square window of side 2 half_width [m] in the tangent plane, centred on the contact point;
+    np.inf where a column misses a body."""
+    spacing = 2 * half_width / cells
+    offsets = (np.arange(cells) - (cells - 1) / 2) * spacing
+    r_up = rotation_matrix(geometry.upper)
+    contact = r_up @ geometry.upper_point + geometry.touch_upper
+    xy = np.stack(np.meshgrid(offsets, offsets, indexing="ij"), axis=-1).reshape(-1, 2) + contact[:2]
+    shape = geometry.shape
+    upper = _surface_heights(shape.distance, lambda p: (p - geometry.touch_upper) @ r_up, contact[2], xy, True)
+    if geometry.partner == "plane":
+        lower = np.zeros(len(xy))
+    else:
+        r_low = rotation_matrix(geometry.lower)
+        lower = _surface_heights(shape.distance, lambda p: p @ r_low, contact[2], xy, False)
+    with np.errstate(invalid="ignore"):
+        gap = (upper - lower).reshape(cells, cells)
+    gap[np.isnan(gap)] = np.inf
+    if not np.isfinite(gap).any():
+        raise ValueError(f"contact_gap: no column of the {2e3 * half_width:.3g} mm window meets both bodies")
+    return np.maximum(gap, 0.0), spacing   # 0 at the contact point, where the bodies touch; round-off below
+
+
+def halfspace_forces(geometry, deltas):
+    """The half-space solution's force [N] at the overlaps `deltas` [m] (halfspace.contact_forces) for the gap of
+    `geometry` (contact_gap), on a window first as wide as Hertz's ellipse at the deepest overlap would need, then
+    resized until the contact there spans HALFSPACE_FILL of it (it may be larger or smaller than Hertz's where the
+    curvature changes)."""
+    a, b = hr.contact_semi_axes(modulus(geometry.partner), geometry.r_major, geometry.r_minor, max(deltas))
+    half_width = min(max(a, b) / HALFSPACE_FILL, HALFSPACE_MAX_HALF_WIDTH)
+    for _ in range(HALFSPACE_PASSES):
+        gap, spacing = contact_gap(geometry, half_width)
+        forces, pressure = halfspace.contact_forces(gap, spacing, modulus(geometry.partner), deltas)
+        rows, columns = np.nonzero(pressure)
+        centre = (HALFSPACE_CELLS - 1) / 2
+        extent = (np.max(np.abs(np.concatenate([rows, columns]) - centre)) + 1) * spacing if len(rows) else 0
+        if extent == 0 or abs(extent / half_width - HALFSPACE_FILL) < 0.15:
+            break
+        half_width = extent / HALFSPACE_FILL
+    return forces
 
 
 # --- the representations ------------------------------------------------------------------------------------
 
 @dataclass
 class RoundedMesh:
-    """A roundedmesh body: `mesh` in its principal frame, where its smooth shape is `shape`, with the pressure
-    integrated in `regime` ('auto', 'quadrature', 'direct'); forces from rm.plane_contact / rm.body_contact."""
+    """A roundedmesh body: `mesh` in its principal frame, where its smooth shape is `shape`, with the contact law's
+    options `regime` ('auto', 'quadrature', 'direct'), `curvature` ('mean': a contact circle; 'principal': Hertz's
+    ellipse) and `normal` ('pressure' or 'energy', rm.engine); forces from rm.plane_contact / rm.body_contact."""
     mesh: Mesh
     shape: SmoothShape
     regime: str = "auto"
+    curvature: str = "mean"
+    normal: str = "pressure"
 
     def forces(self, geometry, deltas):
         """Forces [N] on the upper body at the overlaps `deltas` [m], (n, 3)."""
+        options = dict(regime=self.regime, curvature=self.curvature, normal=self.normal)
         result = []
         for overlap in deltas:
             position = Vector3(*geometry.upper_position(overlap))
             if geometry.partner == "plane":
                 force = plane_contact(self.mesh, position, geometry.upper, Vector3(0, 0, 0), Vector3(0, 0, 1), BODY,
-                                      RIGID, regime=self.regime)[0]
+                                      RIGID, **options)[0]
             else:
                 force = body_contact(self.mesh, Vector3(0, 0, 0), geometry.lower, self.mesh, position, geometry.upper,
-                                     BODY, BODY, regime=self.regime)[2]
+                                     BODY, BODY, **options)[2]
             result.append([force[0], force[1], force[2]])
         return np.array(result)
 
 
-def rounded_mesh(name, nodes, curvature="computed", regime="auto"):
-    """RoundedMesh of `name` with about `nodes` nodes: for the sphere an icosphere of radius RADIUS (nodes one of
-    42, 162, 642, 2562) with curvature 'prescribed' (the sphere's) or 'computed' (Eq. 1); for the pear and the
-    gummy bear Mesh.reference_shape(name, nodes), curvature 'computed' (Eq. 1) or 'prescribed': each triangle
-    given the mean curvature of f = 0 (Hessian of f) where its centroid projects on f = 0."""
+def rounded_mesh(name, nodes, curvature="computed", regime="auto", law_curvature="mean", normal="pressure"):
+    """RoundedMesh of `name` with about `nodes` nodes and the law's options regime, law_curvature (its `curvature`)
+    and normal. The mesh's curvature is 'computed' (Eq. 1) or 'prescribed' (the smooth shape's mean and principal
+    curvatures under each triangle). For the sphere an icosphere of radius RADIUS (nodes one of 42, 162, 642, 2562);
+    for the pear and the gummy bear Mesh.reference_shape(name, nodes, 'computed' or 'exact'); for a grain
+    Grain.mesh(nodes, ...), whose principal frame is mapped to the grain's own."""
+    exact = "exact" if curvature == "prescribed" else "computed"
+    options = dict(regime=regime, curvature=law_curvature, normal=normal)
     if name == "sphere":
         subdivisions = {42: 1, 162: 2, 642: 3, 2562: 4}[nodes]
-        mesh = Mesh.icosphere(RADIUS, subdivisions, curvature="exact" if curvature == "prescribed" else "computed")
-        return RoundedMesh(mesh, SmoothShape("sphere"), regime)
-    mesh = shapes.reference_shape(name, nodes)
-    shape = SmoothShape(name, nodes)
-    if curvature == "computed":
-        return RoundedMesh(mesh, shape, regime)
-    vertices, triangles = np.array(mesh.vertices), np.array(mesh.triangles)
-    radii = []
-    for centroid in vertices[triangles].mean(axis=1):
-        mean = hr.principal_curvatures(shape.distance, hr.project_to_surface(shape.distance, centroid))[0].mean()
-        radii.append(1 / mean if mean != 0 else math.inf)
-    prescribed = Mesh.from_arrays(vertices, triangles, radius=np.array(radii))
-    # the rebuilt mesh has its own principal frame: input point = rotation body point + centroid
-    frame = SmoothShape(name, nodes, tuple(map(tuple, rotation_matrix(prescribed.orientation))),
-                        tuple(np.array(prescribed.centroid)))
-    return RoundedMesh(prescribed, frame, regime)
+        return RoundedMesh(Mesh.icosphere(RADIUS, subdivisions, curvature=exact), SmoothShape("sphere"), **options)
+    if name in grains.NAMES:
+        mesh = grains.grain(name).mesh(nodes, exact)
+        frame = SmoothShape(name, nodes, tuple(map(tuple, rotation_matrix(mesh.orientation))), tuple(mesh.centroid))
+        return RoundedMesh(mesh, frame, **options)
+    return RoundedMesh(shapes.reference_shape(name, nodes, exact), SmoothShape(name, nodes), **options)
+
+
+def source_mesh(name, nodes=2200):
+    """The study's computed-curvature mesh of `name` with about `nodes` nodes (the icosphere of 2562 for the sphere):
+    what a mesh to be remeshed (Mesh.remeshed) is made from."""
+    if name == "sphere":
+        return Mesh.icosphere(RADIUS, 4, curvature="computed")
+    return rounded_mesh(name, nodes).mesh
+
+
+def remeshed_frame(name, mesh, nodes=2200):
+    """SmoothShape of `name` in the principal frame of `mesh`, made from source_mesh(name, nodes) in that mesh's
+    input frame (Mesh.remeshed keeps it): x_reference = rotation x + offset, the reference being the source's
+    principal frame (its own frame for a grain or the sphere)."""
+    source = source_mesh(name, nodes)
+    own = rotation_matrix(mesh.orientation), np.array(mesh.centroid)
+    if name == "sphere" or name in grains.NAMES:
+        rotation, offset = own
+    else:
+        turn = rotation_matrix(source.orientation).T
+        rotation, offset = turn @ own[0], turn @ (own[1] - np.array(source.centroid))
+    return SmoothShape(name, None if name == "sphere" or name in grains.NAMES else nodes,
+                       tuple(map(tuple, rotation)), tuple(offset))
 
 
 SPEED = 0.01   # the pressed body's speed [m/s]; with no damping and no friction YADE's forces do not depend on it
@@ -315,16 +428,34 @@ def _press_in_yade(geometry, deltas, add_body, bounds, functors, verlet_distance
     return np.array([measured[int(round(d / step))] for d in deltas])
 
 
+def peer_frame(name):
+    """The SmoothShape in the body frame of YADE's clumps and level sets of `name` (peers.clump_spheres,
+    peers.level_set_shape): the paper mesh's for the pear and the gummy bear, the reference mesh's
+    (grains.REFERENCE_NODES) for a grain."""
+    if name in grains.NAMES:
+        rotation, centroid = grains.grain(name).frame()
+        return SmoothShape(name, grains.REFERENCE_NODES, tuple(map(tuple, rotation)), tuple(centroid))
+    return SmoothShape(name)
+
+
+def _peer_mass(name):
+    """(mass [kg], principal inertia (3,) [kg m^2]) the clumps and level sets of `name` are given: those of the
+    mesh whose frame they stand in (peers.body_frame), as for the rounded bodies."""
+    mesh = peers.body_frame(name)[0]
+    return DENSITY * mesh.volume, DENSITY * np.array(mesh.inertia)
+
+
 @dataclass
 class Clump:
-    """A YADE clump of `count` spheres (peers.clump_spheres of `name`; for the sphere, one sphere of radius
-    RADIUS), Hertz-Mindlin against a Wall or a copy."""
+    """A YADE clump of `count` spheres (peers.clump_spheres by `method`: None the shape's default, 'primitives' or
+    'fill'; for the sphere, one sphere of radius RADIUS), Hertz-Mindlin against a Wall or a copy."""
     name: str
     count: int
+    method: str = None
 
     @property
     def shape(self):
-        return SmoothShape(self.name)
+        return peer_frame(self.name)
 
     def forces(self, geometry, deltas):
         """Forces [N] on the upper body at the overlaps `deltas` [m], (n, 3), from YADE."""
@@ -333,8 +464,8 @@ class Clump:
                 body = O.bodies.append(utils.sphere(position, RADIUS, material=material))
                 return body, [body]
         else:
-            centres, radii = peers.clump_spheres(self.name, self.count)
-            mass = DENSITY * shapes.mesh_with_scale(self.name)[0].volume
+            centres, radii = peers.clump_spheres(self.name, self.count, self.method)
+            mass = _peer_mass(self.name)[0]
 
             def add(position, ori, material):
                 return peers.add_clump(centres, radii, position, ori, material, mass)
@@ -357,16 +488,15 @@ class LevelSetBody:
 
     @property
     def shape(self):
-        return SmoothShape(self.name)
+        return peer_frame(self.name)
 
     def forces(self, geometry, deltas):
         """Forces [N] on the upper body at the overlaps `deltas` [m], (n, 3), from YADE."""
         level_set = _level_set(self.name, self.spacing, self.surface_nodes)
-        mesh = shapes.mesh_with_scale(self.name)[0]
+        mass, inertia = _peer_mass(self.name)
 
         def add(position, ori, material):
-            body = peers.add_level_set_body(level_set, position, ori, material, DENSITY * mesh.volume,
-                                            DENSITY * np.array(mesh.inertia))
+            body = peers.add_level_set_body(level_set, position, ori, material, mass, inertia)
             return body, [body]
         return _press_in_yade(geometry, deltas, add, [Bo1_LevelSet_Aabb(), Bo1_Wall_Aabb()],
                               [Ig2_LevelSet_LevelSet_ScGeom(), Ig2_Wall_LevelSet_ScGeom()], 0.0)
@@ -374,13 +504,15 @@ class LevelSetBody:
 
 # --- errors -------------------------------------------------------------------------------------------------
 
-def pose_errors(representation, geometry, deltas=None):
+def pose_errors(representation, geometry, deltas=None, reference=None):
     """(NRMSE of the force along d [-], angle between the force and d at the deepest overlap [deg], forces along
-    d [N]) of `representation` in the press `geometry` (module docstring)."""
+    d [N]) of `representation` in the press `geometry` (module docstring), against `reference` (the forces [N] at
+    `deltas`; default geometry.reference(deltas), which a caller judging many representations at one pose
+    computes once)."""
     deltas = overlaps() if deltas is None else deltas
     forces = representation.forces(geometry, deltas)
     along = forces @ _Z
-    error = nrmse(along, geometry.reference(deltas))
+    error = nrmse(along, geometry.reference(deltas) if reference is None else reference)
     deepest = forces[-1]
     norm = np.linalg.norm(deepest)
     angle = 90.0 if norm == 0 else math.degrees(math.acos(min(1.0, max(-1.0, deepest @ _Z / norm))))
