@@ -3,7 +3,7 @@ process: as roundedmesh's rounded bodies, and as YADE's own representations, clu
 and plain spheres of the volume-equivalent radius, each with YADE's Hertz-Mindlin law (roundedmesh.study.peers). The
 figures our engine's speed is stated against.
 
-    /usr/bin/python3 scripts/benchmarks/bench_s1_peers.py [--poses bench/data/s1_settled.csv]
+    /usr/bin/python3 scripts/benchmarks/bench_s1_peers.py [--shape gummy_bear] [--poses bench/data/s1_settled.csv]
         [--peers roundedmesh clumps spheres [levelset] [roundedmesh-principal]] [--nodes N] [--regime auto]
         [--count 40]
         [--spacing 1e-3] [--surface-nodes 511]
@@ -23,10 +23,21 @@ Clumps and level sets keep the packing of the poses (their contacts at the end a
 the warm-up); spheres at the bears' centres are no packing and rearrange within a few hundredths of a second,
 so theirs is the cost of 250 spheres settling in the box (the contact counts before and after are printed).
 
+--shape: the gummy bear (default) or a study grain of the speed-against-error study (roundedmesh.study.grains.NAMES:
+'spheroid', 'pill', 'tetra_grain'), at the poses of its own settled packing, bench/data/s1_settled_<shape>.csv by
+default (bench_shaken_bears.py --shape, then record_s1_scene.py). A grain's roundedmesh bodies are
+grains.grain(shape).mesh(--nodes), default its reference mesh of grains.REFERENCE_NODES = 600 nodes, the mesh
+the packing was settled with; its clumps and level sets are those of roundedmesh.study.peers (an inscribed-sphere
+fill and the level set of its 2200-node mesh). Spheres are the volume-equivalent ones, whatever the shape. A
+grain's coarse clumps are much smaller than its mesh and start nearly out of touch (the pill's 10-sphere clumps:
+27 touching pairs after the warm-up, 839 at the end, against the rounded bodies' 1010), so their cost is that of
+the clumps settling again into their own packing; the spheroid's 160-sphere clumps start with up to 286 member
+contacts in a pair and blow up within 20 steps (out/sve27_costs, 2026-11-26).
+
 --poses: CSV as scripts/benchmarks/record_s1_scene.py writes it: '#' lines are comments, a header, one row per body: id,
 shape (rows whose shape starts with "wall" are the box's and are skipped: the builders make S1's box), and
-x,y,z [m], qw,qx,qy,qz (unit quaternion body -> global, principal frame of Mesh.reference_shape), vx,vy,vz [m/s],
-wx,wy,wz [rad/s].
+x,y,z [m], qw,qx,qy,qz (unit quaternion body -> global, principal frame of the shape's reference mesh,
+peers.body_frame), vx,vy,vz [m/s], wx,wy,wz [rad/s].
 
 Prints and writes to --output (CSV), per representation: the median wall and CPU ms per step, the real
 interactions (YADE's, and the touching body pairs and body-wall pairs they make), the per-engine split, and
@@ -52,7 +63,7 @@ from yade import O  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.progress import Progress  # noqa: E402
-from roundedmesh.study import peers  # noqa: E402
+from roundedmesh.study import grains, peers  # noqa: E402
 from roundedmesh.study.benchmarking import machine, step_times_ms  # noqa: E402
 
 STATE_COLUMNS = ["x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz"]
@@ -60,6 +71,12 @@ ENGINES = ["ForceResetter", "InsertionSortCollider", "InteractionLoop", "rounded
 # rm.statistics()'s stage times: states read from YADE, broad phase, pairs (lists, narrow phase, law), sums,
 # forces written to YADE.
 ROUNDEDMESH_STAGES = ["read_ms", "broad_phase_ms", "pairs_ms", "reduction_ms", "write_ms"]
+DATA = os.path.join("bench", "data")  # the settled packings, relative to the repository's root
+
+
+def default_poses(shape):
+    """The settled packing of `shape`: S1's of the bear, s1_settled_<shape>.csv of anything else."""
+    return os.path.join(DATA, "s1_settled.csv" if shape == "gummy_bear" else f"s1_settled_{shape}.csv")
 
 
 def read_poses(path, shape):
@@ -177,17 +194,24 @@ def measure(name, build, args):
 
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--poses", default="bench/data/s1_settled.csv")
-    parser.add_argument("--shape", default="gummy_bear")
+    parser.add_argument("--poses", default=None,
+                        help="settled packing (CSV; default bench/data/s1_settled.csv, s1_settled_<shape>.csv for a "
+                             "grain)")
+    parser.add_argument("--shape", default="gummy_bear",
+                        help=f"gummy_bear or a study grain ({', '.join(grains.NAMES)})")
     parser.add_argument("--peers", nargs="+", default=["roundedmesh", "clumps", "spheres"],
                         choices=["roundedmesh", "clumps", "levelset", "spheres", "roundedmesh-principal"])
     parser.add_argument("--nodes", type=int, default=None,
-                        help="nodes of the roundedmesh meshes (Mesh.reference_shape; default its own)")
+                        help="nodes of the roundedmesh meshes (Mesh.reference_shape or Grain.mesh; default the "
+                             "shape's reference mesh)")
     parser.add_argument("--regime", default="auto", choices=("auto", "quadrature", "direct", "exact"),
                         help="roundedmesh's pressure integration (roundedmesh.engine)")
     parser.add_argument("--normal", default="pressure", choices=("pressure", "energy"),
                         help="roundedmesh's normal law (roundedmesh.engine)")
     parser.add_argument("--count", type=int, default=40, help="spheres per clump")
+    parser.add_argument("--clump-method", default=None, choices=peers.CLUMP_METHODS,
+                        help="how a clump is built (peers.clump_spheres): the shape's primitives or the fill of its "
+                             "mesh; default the shape's own (primitives for the bear, the fill for a grain)")
     parser.add_argument("--spacing", type=float, default=1e-3, help="level-set grid spacing [m]")
     parser.add_argument("--surface-nodes", type=int, default=511, help="level-set boundary nodes asked for")
     parser.add_argument("--level-set-verlet", type=float, default=None,
@@ -201,6 +225,9 @@ def main(argv):
     args = parser.parse_args(argv)
     if args.blocks < 1 or args.block_steps < 1 or args.warmup < 0:
         parser.error("--blocks and --block-steps must be positive, --warmup >= 0")
+    if args.poses is None:
+        args.poses = default_poses(args.shape)
+    default_nodes = grains.REFERENCE_NODES if args.shape in grains.NAMES else "the default"
 
     command = " ".join(shlex.quote(a) for a in ["OMP_NUM_THREADS=1", sys.executable] + sys.argv)
     threads = ctypes.CDLL("libgomp.so.1").omp_get_max_threads()
@@ -214,14 +241,15 @@ def main(argv):
           f"damping ratio at {betan['bear-bear overlap'] * 1e3:.3f} / {betan['bear-wall overlap'] * 1e3:.3f} mm)")
     level_set_options = {} if args.level_set_verlet is None else {"verlet_distance": args.level_set_verlet}
     builders = {
-        "roundedmesh": (f"roundedmesh, {args.shape} meshes of {args.nodes or 'the default'} nodes, "
+        "roundedmesh": (f"roundedmesh, {args.shape} meshes of {args.nodes or default_nodes} nodes, "
                         f"regime {args.regime}, normal {args.normal}",
                         lambda: peers.build_rounded(poses, args.shape, args.nodes, regime=args.regime,
                                                     normal=args.normal)),
         "roundedmesh-principal": (f"roundedmesh, principal curvatures, regime {args.regime}",
                                   lambda: peers.build_rounded(poses, args.shape, args.nodes, regime=args.regime,
                                                               curvature="principal")),
-        "clumps": (f"clumps of {args.count} spheres", lambda: peers.build_clumps(poses, args.count, args.shape)),
+        "clumps": (f"clumps of {args.count} spheres", lambda: peers.build_clumps(poses, args.count, args.shape,
+                                                                                 method=args.clump_method)),
         "levelset": (f"level sets ({args.surface_nodes} rays, grid {args.spacing * 1e3:g} mm)",
                      lambda: peers.build_level_sets(poses, args.shape, args.spacing, args.surface_nodes,
                                                     **level_set_options)),

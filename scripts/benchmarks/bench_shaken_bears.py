@@ -5,9 +5,18 @@ process started from the saved scene, with the share of every engine (ForceReset
 engine split into its C++ step, its Python wrapper and the PyRunner that calls it, NewtonIntegrator).
 
     /usr/bin/python3 scripts/benchmarks/bench_shaken_bears.py [--rebuild] [--output out/bench_shaken_bears]
+        [--shape gummy_bear] [--settle-only]
         [--count 250] [--dt 1e-4] [--max-time 1.5] [--settled-speed 1e-2]
         [--settle-dt 5e-4] [--settle-damping 0.3]
         [--threads 1 2] [--blocks 5] [--block-steps 200] [--warmup 100]
+
+--shape: the bodies, 'gummy_bear' (Mesh.reference_shape("gummy_bear", 554)) or a study grain of the
+speed-against-error study (roundedmesh.study.grains.NAMES: 'spheroid', 'pill', 'tetra_grain'), whose mesh is
+grains.grain(name).mesh(grains.REFERENCE_NODES = 600), curvature computed: the same lattice, jitter, random
+orientations (--seed), materials, box and gravity, so that every shape's packing is S1's. The default output
+folder is out/bench_shaken_bears for the bear and out/bench_shaken_bears_<shape> for a grain.
+--settle-only: settle (or reuse the saved scene) and describe it, without the measurements: what
+scripts/benchmarks/record_s1_scene.py needs to write the packing (bench/data/s1_settled_<shape>.csv).
 
 Settling follows S1 (dt, no numerical damping) unless --settle-dt / --settle-damping say otherwise. With 250
 bears a step of the packing costs a few hundred ms (0.43 s on one thread, 0.26 s on two, 2-core Xeon at
@@ -41,7 +50,7 @@ from yade.minieigenHP import Quaternion
 import roundedmesh as rm
 import roundedmesh.scene  # noqa: F401  (the engine's step, wrapped for timing in --measure)
 from roundedmesh.progress import Progress
-from roundedmesh.study import benchmarking
+from roundedmesh.study import benchmarking, grains
 from roundedmesh.study.benchmarking import machine
 
 # Scene S1 (doc/scenes.md); the box stands still here.
@@ -54,12 +63,23 @@ PARTICLE = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=0.01)
 BOX = rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=0.01)   # density unused: walls are fixed
 SAMPLE = 100                        # steps between samples while settling
 RESULT = "RESULT "                  # prefix of the --measure process's result line
+SHAPES = ("gummy_bear",) + grains.NAMES
+TAG = "bench_shaken_bears.settled"  # O.tags key of the saved scene's settling record (JSON)
 
 
-def build(count, dt, seed):
-    """Resets YADE and builds S1 with `count` gummy bears and a standing box. Returns the bears' ids."""
+def shape_mesh(shape):
+    """The mesh every body of `shape` shares: the bear's paper mesh (554 nodes asked, 563 made) or a grain's
+    reference mesh (module docstring), in its principal frame, which the bodies' states are of."""
+    if shape == "gummy_bear":
+        return rm.Mesh.reference_shape("gummy_bear", 554)
+    return grains.grain(shape).mesh(grains.REFERENCE_NODES)
+
+
+def build(count, dt, seed, shape="gummy_bear"):
+    """Resets YADE and builds S1 with `count` bodies of `shape` (SHAPES) and a standing box. Returns the bodies'
+    ids."""
     O.reset()
-    mesh = rm.Mesh.reference_shape("gummy_bear", 554)
+    mesh = shape_mesh(shape)
     rng = np.random.default_rng(seed)
     bears = []
     for i in range(count):
@@ -117,7 +137,7 @@ SETTLING_FIELDS = ["step", "time_s", "wall_s", "ms_per_step", "mean_height_m", "
 
 
 def settle(args, path):
-    bears = build(args.count, args.dt, args.seed)
+    bears = build(args.count, args.dt, args.seed, args.shape)
     dt, newton = O.dt, O.engines[-1]
     if args.settle_dt:
         limit = rm.critical_timestep()
@@ -126,7 +146,7 @@ def settle(args, path):
         O.dt = args.settle_dt
     newton.damping = args.settle_damping
     max_steps = int(round(args.max_time / O.dt))
-    print(f"settling {len(bears)} gummy bears ({len(rm.Mesh.reference_shape('gummy_bear', 554).vertices)} nodes "
+    print(f"settling {len(bears)} {args.shape} bodies ({len(shape_mesh(args.shape).vertices)} nodes "
           f"each): until the mean speed is below {args.settled_speed:g} m/s (after {args.min_time:g} s), "
           f"at most {args.max_time:g} s = {max_steps} steps of {O.dt:g} s, NewtonIntegrator damping "
           f"{newton.damping:g}", flush=True)
@@ -152,7 +172,7 @@ def settle(args, path):
                   f"{stats['quadrature_contacts'] + stats['direct_contacts']} triangle contacts, "
                   f"{wall / steps * 1e3:.1f} ms/step", flush=True)
         if not np.isfinite(positions).all() or not np.isfinite(speeds).all():
-            plot_settling(args.output, rows, len(bears))
+            plot_settling(args.output, rows, len(bears), args.shape)
             raise SystemExit(f"settling: non-finite positions or speeds at t = {O.time:g} s; stopped "
                              f"(rows so far in {args.output}/settling.csv)")
         if O.time >= args.min_time and speeds.mean() < args.settled_speed:
@@ -161,12 +181,12 @@ def settle(args, path):
     print(f"settling: {'settled' if settled else 'NOT settled (max time reached)'} at t = {O.time:.4f} s "
           f"({O.iter} steps) after {time.perf_counter() - start:.1f} s of wall time; mean speed "
           f"{rows[-1][6]:.3g} m/s, max {rows[-1][7]:.3g} m/s")
-    O.tags["bench_shaken_bears.settled"] = json.dumps({"settled": settled, "time": O.time, "steps": O.iter,
-                                                        "seed": args.seed, "count": len(bears), "dt": O.dt,
-                                                        "damping": newton.damping})
+    O.tags[TAG] = json.dumps({"settled": settled, "time": O.time, "steps": O.iter, "seed": args.seed,
+                              "count": len(bears), "dt": O.dt, "damping": newton.damping, "shape": args.shape,
+                              "wall_s": time.perf_counter() - start, "command": args.command})
     O.dt, newton.damping = dt, 0.0  # the benchmark runs S1's step without numerical damping
     O.save(path)
-    plot_settling(args.output, rows, len(bears))
+    plot_settling(args.output, rows, len(bears), args.shape)
     print(f"wrote {path}, {args.output}/settling.csv, {args.output}/settling.png")
 
 
@@ -177,7 +197,7 @@ def write_csv(folder, rows):
         writer.writerows(rows)
 
 
-def plot_settling(folder, rows, count):
+def plot_settling(folder, rows, count, shape="gummy_bear"):
     if not rows:
         return
     import matplotlib
@@ -189,7 +209,8 @@ def plot_settling(folder, rows, count):
     figure, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
     top.plot(t, column["mean_height_m"] * 1e3, "k-", label="mean height")
     top.set(ylabel="mean height of the centres [mm]",
-            title=f"S1, {count} gummy bears falling into a standing box")
+            title=f"S1, {count} {'gummy bears' if shape == 'gummy_bear' else shape + ' bodies'} falling into "
+                  "a standing box")
     top.grid(alpha=0.3)
     bottom.plot(t, column["ms_per_step"], "C0-", label="wall ms/step")
     bottom.set(xlabel="time [s]", ylabel="wall time per step [ms]")
@@ -277,8 +298,9 @@ def describe_settled(path):
     positions, speeds = kinematics(ids)
     z = positions[:, 2]
     volume = rm.rounded_bodies()[ids[0]].volume
-    info = json.loads(O.tags["bench_shaken_bears.settled"]) if O.tags.has_key("bench_shaken_bears.settled") else {}
-    print(f"\nsettled scene {path}: {len(ids)} bears, t = {O.time:.4f} s ({O.iter} steps of "
+    info = json.loads(O.tags[TAG]) if O.tags.has_key(TAG) else {}
+    print(f"\nsettled scene {path}: {len(ids)} {info.get('shape', 'gummy_bear')} bodies, t = {O.time:.4f} s "
+          f"({O.iter} steps of "
           f"{info.get('dt', math.nan):g} s, NewtonIntegrator damping {info.get('damping', math.nan):g}; "
           f"{'settled' if info.get('settled') else 'max time reached, not settled'}); benchmark dt = {O.dt:g} s")
     print(f"  mean height {z.mean():.4f} m, median {np.median(z):.4f} m, lowest {z.min():.4f} m, highest "
@@ -364,7 +386,11 @@ def run_measurement(args, path, threads):
 
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--output", default="out/bench_shaken_bears")
+    parser.add_argument("--output", default=None,
+                        help="folder (default out/bench_shaken_bears, or out/bench_shaken_bears_<shape> for a grain)")
+    parser.add_argument("--shape", default="gummy_bear", choices=SHAPES, help="the bodies (module docstring)")
+    parser.add_argument("--settle-only", action="store_true",
+                        help="settle (or reuse) and describe the packing; no measurement")
     parser.add_argument("--rebuild", action="store_true", help="settle afresh even if settled.yade.gz exists")
     parser.add_argument("--count", type=int, default=250)
     parser.add_argument("--seed", type=int, default=1)
@@ -389,6 +415,9 @@ def main(argv):
             parser.error(f"--{name.replace('_', '-')} must be positive")
     if args.warmup < 0 or any(n < 1 for n in args.threads):
         parser.error("--warmup must be >= 0 and --threads positive")
+    if args.output is None:
+        args.output = os.path.join("out", "bench_shaken_bears" + ("" if args.shape == "gummy_bear" else
+                                                                  f"_{args.shape}"))
     os.makedirs(args.output, exist_ok=True)
     path = os.path.join(args.output, "settled.yade.gz")
     if args.measure:
@@ -396,6 +425,8 @@ def main(argv):
         return
 
     command = " ".join(shlex.quote(a) for a in [sys.executable] + sys.argv)
+    # kept in the saved scene's settling record, for the packing's provenance; the settling's threads with it
+    args.command = f"OMP_NUM_THREADS={os.environ.get('OMP_NUM_THREADS', '')} {command}"
     print(f"machine: {machine()}")
     print(f"command: {command}")
     if args.rebuild or not os.path.exists(path):
@@ -405,6 +436,11 @@ def main(argv):
     count = describe_settled(path)
     if count != args.count:
         raise SystemExit(f"{path} holds {count} bears, not --count {args.count}: give --rebuild")
+    settled_shape = json.loads(O.tags[TAG]).get("shape", "gummy_bear") if O.tags.has_key(TAG) else "gummy_bear"
+    if settled_shape != args.shape:
+        raise SystemExit(f"{path} holds {settled_shape} bodies, not --shape {args.shape}: give --rebuild")
+    if args.settle_only:
+        return
 
     results = {n: run_measurement(args, path, n) for n in args.threads}
 

@@ -18,6 +18,18 @@ floor as S1 shakes the box, z = A sin(2 pi t / T) (A = 0.025 m, T = 0.25 s), and
     /usr/bin/python3 scripts/benchmarks/record_s1_scene.py [--settled out/bench_shaken_bears/settled.yade.gz]
                                                            [--steps 200]
 
+A packing of a study grain (roundedmesh.study.grains.NAMES), settled by bench_shaken_bears.py --shape <name>, is
+written alone, as bench/data/s1_settled_<name>.csv (its 'shape' column the grain's name): the speed-against-error
+study times YADE's peers at its poses (scripts/benchmarks/bench_s1_peers.py --shape <name>); the mesh file and the
+trajectories are the C++ benchmark's, which runs the bear only.
+
+    OMP_NUM_THREADS=2 /usr/bin/python3 scripts/benchmarks/bench_shaken_bears.py --shape spheroid --rebuild \
+        --settle-dt 5e-4 --settle-damping 0.3 --settle-only
+    /usr/bin/python3 scripts/benchmarks/record_s1_scene.py --settled out/bench_shaken_bears_spheroid/settled.yade.gz
+
+The shape is the one bench_shaken_bears.py recorded in the saved scene (O.tags), gummy_bear for a scene saved
+before it did; the CSV's header keeps the settling command and this one.
+
 s1_shaking.bin and s1_resting.bin: the ASCII line "roundedmesh trajectory 1\n", then int32 body count n, int32 step count m,
 float64 dt, int32 ids[n], then m frames of n x 13 float32: position (3) [m], orientation quaternion
 (w, x, y, z), velocity (3) [m/s], angular velocity (3) [rad/s], bodies in the order of ids. float32 keeps
@@ -25,8 +37,10 @@ positions to about 2e-8 m, far below the overlaps of the packing (1e-4 m): the b
 the recorded states, it does not integrate them.
 """
 import argparse
+import json
 import math
 import os
+import shlex
 import struct
 import sys
 
@@ -35,10 +49,12 @@ from yade import O, PyRunner
 
 import roundedmesh as rm
 from roundedmesh.progress import Progress
+from roundedmesh.study import grains
 
 AMPLITUDE, PERIOD = 0.025, 0.25  # S1's shaking [m], [s]
 HEADER = b"roundedmesh trajectory 1\n"
 STATE_COLUMNS = ["x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz"]
+SETTLED_TAG = "bench_shaken_bears.settled"  # bench_shaken_bears.py's settling record in the saved scene (JSON)
 
 
 def state_row(state):
@@ -66,15 +82,34 @@ def walls():
             if b is not None and type(b.shape).__name__ == "Wall"]
 
 
-def write_settled(bears, path):
+def settling_record():
+    """bench_shaken_bears.py's record of how the loaded scene was settled ({} for a scene saved before it kept
+    one): shape, seed, settling dt [s] and damping, whether it settled, the command."""
+    return json.loads(O.tags[SETTLED_TAG]) if O.tags.has_key(SETTLED_TAG) else {}
+
+
+def settled_name(shape):
+    """The packing's file name: s1_settled.csv for the bear (the C++ benchmark's), s1_settled_<shape>.csv else."""
+    return "s1_settled.csv" if shape == "gummy_bear" else f"s1_settled_{shape}.csv"
+
+
+def write_settled(bears, path, shape="gummy_bear", made_by=()):
+    """The packing as bench_s1_peers.read_poses reads it: '#' comment lines (`made_by`: lines of provenance, e.g.
+    the commands), a header, one row per body (`shape` its shape column) and per wall, states at full double
+    precision."""
     with open(path, "w") as f:
-        f.write(f"# S1 settled packing of {len(bears)} gummy bears (doc/scenes.md), t = {O.time:.6g} s, "
+        plural = "gummy bears" if shape == "gummy_bear" else f"{shape} bodies"
+        f.write(f"# S1 settled packing of {len(bears)} {plural} (doc/scenes.md), t = {O.time:.6g} s, "
                 f"dt = {O.dt:g} s; written by scripts/benchmarks/record_s1_scene.py\n")
-        f.write("# shape: gummy_bear (bench/data/gummy_bear.mesh) or wall<axis><sense> (a YADE Wall); "
-                "quaternion body -> global\n")
+        mesh = ("bench/data/gummy_bear.mesh" if shape == "gummy_bear" else
+                f"roundedmesh.study.grains.grain({shape!r}).mesh({grains.REFERENCE_NODES}), curvature computed")
+        f.write(f"# shape: {shape} ({mesh}) or wall<axis><sense> (a YADE Wall); quaternion body -> global, of the "
+                "mesh's principal frame\n")
+        for line in made_by:
+            f.write(f"# {line}\n")
         f.write(",".join(["id", "shape"] + STATE_COLUMNS) + "\n")
         for i in bears:
-            f.write(",".join([str(i), "gummy_bear"] + [f"{c:.17g}" for c in state_row(O.bodies[i].state)]) + "\n")
+            f.write(",".join([str(i), shape] + [f"{c:.17g}" for c in state_row(O.bodies[i].state)]) + "\n")
         for i, axis, sense in walls():
             shape = f"wall{'xyz'[axis]}{'+' if sense > 0 else '-'}"
             f.write(",".join([str(i), shape] + [f"{c:.17g}" for c in state_row(O.bodies[i].state)]) + "\n")
@@ -119,6 +154,7 @@ def main(argv):
                                                          os.pardir, "bench", "data"))
     parser.add_argument("--steps", type=int, default=200, help="steps of each trajectory to record")
     args = parser.parse_args(argv)
+    command = " ".join(shlex.quote(a) for a in [sys.executable, sys.argv[0]] + list(argv))
     if args.steps < 1:
         parser.error("--steps must be positive")
     if not os.path.exists(args.settled):
@@ -127,8 +163,21 @@ def main(argv):
     O.load(args.settled)
     meshes = rm.rounded_bodies()
     bears = sorted(meshes)
+    record = settling_record()
+    shape = record.get("shape", "gummy_bear")
+    made_by = [f"settled by: {record['command']}" if "command" in record else
+               "settled by: scripts/benchmarks/bench_shaken_bears.py (command not recorded)",
+               f"settling: seed {record.get('seed', '?')}, dt {record.get('dt', '?')} s, NewtonIntegrator damping "
+               f"{record.get('damping', '?')}, {record.get('steps', '?')} steps, "
+               f"{'settled' if record.get('settled') else 'max time reached'}" if record else "settling: not recorded",
+               f"written by: {command}"]
+    settled = os.path.join(args.output, settled_name(shape))
+    if shape != "gummy_bear":
+        write_settled(bears, settled, shape, made_by)
+        print(f"wrote {settled} ({len(bears)} {shape} bodies)")
+        return
     write_mesh(meshes[bears[0]], os.path.join(args.output, "gummy_bear.mesh"))
-    write_settled(bears, os.path.join(args.output, "s1_settled.csv"))
+    write_settled(bears, settled, shape, made_by)
     record(bears, args.steps, os.path.join(args.output, "s1_shaking.bin"), AMPLITUDE)
     O.load(args.settled)
     record(bears, args.steps, os.path.join(args.output, "s1_resting.bin"), 0.0)

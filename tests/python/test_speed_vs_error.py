@@ -1,7 +1,10 @@
 """The error axis of the speed-against-error study (issue 14, doc/speed-vs-error.md): Hertz's reference at a smooth
 shape's contact point (roundedmesh.study.hertz_reference), the pressing of YADE's representations
-(roundedmesh.study.shape_error), and scripts/studies/speed_vs_error.py --quick --costs --report end to end."""
+(roundedmesh.study.shape_error), and scripts/studies/speed_vs_error.py --quick --costs --report end to end; the S1
+packing of a study grain and its costs (bench_shaken_bears.py and record_s1_scene.py with --shape,
+speed_vs_error_costs.py --shapes)."""
 import csv
+import importlib.util
 import math
 import os
 import subprocess
@@ -17,6 +20,8 @@ from roundedmesh.study.validation import pair_poses
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir)
 SCRIPT = os.path.join(ROOT, "scripts", "studies", "speed_vs_error.py")
+COSTS = os.path.join(ROOT, "scripts", "studies", "speed_vs_error_costs.py")
+BENCHMARKS = os.path.join(ROOT, "scripts", "benchmarks")
 MODULUS = 1.0e6
 OVERLAPS = np.linspace(0, 5e-4, 11)
 
@@ -223,14 +228,16 @@ def test_every_representation_stands_where_the_smooth_shape_does():
 
 @pytest.mark.slow
 def test_quick_study_runs_and_writes_the_table(tmp_path):
-    # the whole study in one run: errors, S1 costs (speed_vs_error_costs.py --quick) and the report
-    out = subprocess.run(["/usr/bin/python3", SCRIPT, "--quick", "--costs", "--report", "--output", str(tmp_path)],
-                         capture_output=True, text=True, timeout=180, env=os.environ)
+    # the whole study in one run on one shape of each kind (a sphere, a blend of spheres, a grain): errors, S1 costs
+    # (speed_vs_error_costs.py --quick, the bear's) and the report
+    shapes = ("sphere", "gummy_bear", "spheroid")
+    out = subprocess.run(["/usr/bin/python3", SCRIPT, "--quick", "--shapes", *shapes, "--costs", "--report",
+                          "--output", str(tmp_path)], capture_output=True, text=True, timeout=300, env=os.environ)
     assert out.returncode == 0, out.stdout + out.stderr
     with open(tmp_path / "errors.csv", newline="") as f:
         rows = list(csv.DictReader(f))
     keys = {(r["shape"], r["family"], r["partner"]) for r in rows}
-    for shape in ("sphere", "pear", "gummy_bear"):
+    for shape in shapes:
         for family in ("roundedmesh", "clumps") + (("level_sets",) if shape != "sphere" else ()):
             for partner in ("plane", "self"):
                 assert (shape, family, partner) in keys
@@ -241,13 +248,99 @@ def test_quick_study_runs_and_writes_the_table(tmp_path):
         if r["shape"] == "sphere" and r["family"] == "roundedmesh" and r["nodes or spheres"] == "2562":
             assert float(r["NRMSE worst [%]"]) < 0.3
     assert (tmp_path / "errors.md").read_text().count("\n") == len(rows) + 2
+    assert {r["configuration"] for r in rows if r["shape"] == "gummy_bear" and r["family"] == "clumps"} == {
+        "clump", "clump, sphere fill"}          # the bear's primitives and the fill a user makes from a mesh
     with open(tmp_path / "costs.csv", newline="") as f:
         costs = list(csv.DictReader(f))
     assert [c["configuration"] for c in costs] == ["curvature computed, auto", "clump", "level set, grid 2 mm"]
     assert all(float(c["median_cpu_ms"]) > 0 for c in costs)
-    with open(tmp_path / "pareto.csv", newline="") as f:
+    with open(tmp_path / "pareto_gummy_bear.csv", newline="") as f:
         timed = [r for r in csv.DictReader(f) if r["CPU ms per step"]]
     # --quick times the first configuration of each family; the 10-sphere clump has no --quick error
     assert {(r["configuration"], r["nodes or spheres"]) for r in timed} == {("curvature computed, auto", "300"),
                                                                            ("level set, grid 2 mm", "255")}
-    assert (tmp_path / "guide.md").exists() and (tmp_path / "pareto.png").exists()
+    assert (tmp_path / "guide.md").exists() and (tmp_path / "pareto_gummy_bear.png").exists()
+    assert (tmp_path / "guide_summary.md").read_text().count("spheroid") >= 1
+
+
+def _bench_s1_peers():
+    """scripts/benchmarks/bench_s1_peers.py as a module (imported, it does not restart itself)."""
+    spec = importlib.util.spec_from_file_location("bench_s1_peers", os.path.join(BENCHMARKS, "bench_s1_peers.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.slow
+def test_a_grain_settles_into_s1_and_its_packing_is_written_as_the_peers_read_it(tmp_path):
+    """bench_shaken_bears.py --shape then record_s1_scene.py, on 4 pills for 20 steps (seconds): the packing alone,
+    as s1_settled_pill.csv, its shape column the grain's name, the commands in its header, and
+    bench_s1_peers.read_poses takes it for --shape pill and refuses it for the bear."""
+    env = {**os.environ, "OMP_NUM_THREADS": "1"}
+    settle = ["/usr/bin/python3", os.path.join(BENCHMARKS, "bench_shaken_bears.py"), "--shape", "pill", "--count", "4",
+              "--settle-dt", "5e-4", "--settle-damping", "0.3", "--max-time", "0.01", "--min-time", "0.01",
+              "--settle-only", "--output", str(tmp_path)]
+    out = subprocess.run(settle, capture_output=True, text=True, timeout=120, env=env)
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert "settling 4 pill bodies" in out.stdout and "measuring" not in out.stdout
+    record = ["/usr/bin/python3", os.path.join(BENCHMARKS, "record_s1_scene.py"), "--settled",
+              str(tmp_path / "settled.yade.gz"), "--output", str(tmp_path)]
+    out = subprocess.run(record, capture_output=True, text=True, timeout=120, env=env)
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert sorted(p.name for p in tmp_path.glob("*.csv")) == ["s1_settled_pill.csv", "settling.csv"]  # no bear files
+    text = (tmp_path / "s1_settled_pill.csv").read_text()
+    comments = [line for line in text.splitlines() if line.startswith("#")]
+    assert any("settled by:" in line and "--shape pill" in line for line in comments)
+    assert any("written by:" in line and "record_s1_scene.py" in line for line in comments)
+    with open(tmp_path / "s1_settled_pill.csv", newline="") as f:
+        shapes = [row["shape"] for row in csv.DictReader(line for line in f if not line.startswith("#"))]
+    assert shapes[:4] == ["pill"] * 4 and all(s.startswith("wall") for s in shapes[4:]) and len(shapes) == 9
+    peers_script = _bench_s1_peers()
+    poses = peers_script.read_poses(str(tmp_path / "s1_settled_pill.csv"), "pill")
+    assert len(poses) == 4 and all(0 < p[0][2] < 0.1 for p in poses)   # the lowest layer, still in the air
+    with pytest.raises(SystemExit):
+        peers_script.read_poses(str(tmp_path / "s1_settled_pill.csv"), "gummy_bear")
+    assert peers_script.default_poses("pill") == os.path.join("bench", "data", "s1_settled_pill.csv")
+
+
+def test_costs_leave_out_a_configuration_whose_packing_blew_up():
+    """speed_vs_error_costs.blown_up on bench_s1_peers.py's rows: the grains' 160-sphere clumps (bodies at 2e25 m/s,
+    no touching pair left) and a packing that lost most of its contacts are left out; a settled one is kept."""
+    spec = importlib.util.spec_from_file_location("speed_vs_error_costs", COSTS)
+    costs = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(costs)
+    row = {"largest_speed": "0.0535", "touching_body_pairs_after_warmup": "963", "touching_body_pairs": "1006"}
+    assert costs.blown_up(row) is None
+    assert "2.21e+25 m/s" in costs.blown_up({**row, "largest_speed": "2.21e+25", "touching_body_pairs": "0"})
+    assert "blew up" in costs.blown_up({**row, "largest_speed": "nan"})
+    assert "963 after the warm-up, 400 at the end" in costs.blown_up({**row, "touching_body_pairs": "400"})
+
+
+@pytest.mark.slow
+def test_quick_costs_of_a_grain_time_one_configuration_per_family(tmp_path):
+    """speed_vs_error_costs.py --quick --shapes spheroid on a packing of 4 spheroids (bench_s1_peers.py --shape with
+    each family; about half a minute, most of it building the clump and the level set from the 2200-node mesh):
+    one row per family, the shape column first, named as errors.csv names them."""
+    rows = ["id,shape,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz",
+            "5,spheroid,-0.10,0.00,0.0195,1,0,0,0,0,0,0,0,0,0",     # lying on the floor, 0.3 mm in
+            "6,spheroid,-0.10,0.00,0.0590,1,0,0,0,0,0,-0.05,0,0,0",  # on the first, falling
+            "7,spheroid,0.10,0.10,0.05,1,0,0,0,0.1,0,0,0,0,2.0",
+            "8,spheroid,0.15,-0.10,0.05,0.5,0.5,0.5,0.5,0,0,0,1.0,0,0",
+            "0,wallz+,0,0,0,1,0,0,0,0,0,0,0,0,0"]
+    (tmp_path / "s1_settled_spheroid.csv").write_text("# four spheroids\n" + "\n".join(rows) + "\n")
+    out = subprocess.run(["/usr/bin/python3", COSTS, "--quick", "--shapes", "spheroid", "--poses-folder",
+                          str(tmp_path), "--output", str(tmp_path)],
+                         capture_output=True, text=True, timeout=300, env=os.environ)
+    assert out.returncode == 0, out.stdout + out.stderr
+    with open(tmp_path / "costs.csv", newline="") as f:
+        reader = csv.DictReader(f)
+        assert reader.fieldnames[0] == "shape"
+        costs = list(reader)
+    assert [(c["shape"], c["configuration"], c["size"]) for c in costs] == [
+        ("spheroid", "curvature computed, auto", "300"), ("spheroid", "clump", "10"),
+        ("spheroid", "level set, grid 2 mm", "255")]
+    assert all(float(c["median_cpu_ms"]) > 0 and int(c["contacts"]) > 0 for c in costs)
+    # a packing that is not there is named before anything runs
+    out = subprocess.run(["/usr/bin/python3", COSTS, "--quick", "--shapes", "pill", "--poses-folder", str(tmp_path),
+                          "--output", str(tmp_path)], capture_output=True, text=True, timeout=120, env=os.environ)
+    assert out.returncode != 0 and "s1_settled_pill.csv" in out.stderr
