@@ -17,8 +17,8 @@ YADE's peers, the speed-against-error study, benchmark helpers) is in the subpac
 on first use (`from roundedmesh.study import scenes`, or rm.study.scenes); its modules' old names here
 (rm.validation, `import roundedmesh.scenes`, ...) still work, with a DeprecationWarning. See doc/user-guide.md.
 
-rm.cheapest_model(shape, error) is the cheapest mesh and regime that meets a force error according to the
-speed-against-error study (doc/speed-vs-error.md).
+rm.cheapest_model(shape_or_mesh, error) is the cheapest mesh and engine options that meet a force error according to
+the speed-against-error study (doc/speed-vs-error.md); rm.add_body(mesh, ..., error=0.05) applies its mesh.
 """
 import importlib
 
@@ -42,14 +42,16 @@ __all__ = ["Mesh", "HertzMaterial", "add_body", "add_sphere", "assign_material",
            "triangle_forces", "cheapest_model"]
 
 
-def cheapest_model(shape, error, pose_statistic="median", data=None):
-    """The cheapest roundedmesh configuration (mesh nodes, curvature, regime) of `shape` ('sphere', 'pear',
-    'gummy_bear') whose force error in the speed-against-error study is at most `error`, a fraction (0.05 for
-    5 %), for `pose_statistic` 'median' or 'worst', as a ModelChoice; ModelChoice.mesh() builds its mesh, its
-    regime goes to rm.engine(regime=...). Raises ValueError when no configuration of the study meets it.
-    roundedmesh.study.model_choice.cheapest_model, imported on first call, has the details."""
+def cheapest_model(shape_or_mesh, error, partner="both", pose_statistic="median", data=None):
+    """The cheapest roundedmesh configuration (mesh nodes, curvature, the engine's regime, curvature and normal)
+    whose force error meets `error`, a fraction (0.05 for 5 %), against `partner` ('both', 'plane', 'self') for
+    `pose_statistic` ('median' or 'worst'), as a ModelChoice: for a shape of the speed-against-error study (by name)
+    the study's measurement, for any Mesh the study's fits of error against the mesh's resolution, remeshing it
+    coarser where the target allows. ModelChoice.mesh() is its mesh, ModelChoice.engine_options go to
+    rm.engine(**...). Raises ValueError when nothing meets the target. roundedmesh.study.model_choice, imported on
+    first call, has the details."""
     from .study.model_choice import cheapest_model as choose
-    return choose(shape, error, pose_statistic=pose_statistic, data=data)
+    return choose(shape_or_mesh, error, partner=partner, pose_statistic=pose_statistic, data=data)
 
 
 def __getattr__(name):

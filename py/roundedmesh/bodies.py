@@ -10,13 +10,15 @@ every contact it has, also with the other partners, is roundedmesh's.
 import json
 import math
 import numbers
+import warnings
 
 from yade import Body, Material, O, Shape
 from yade import Sphere as YadeSphere
 from yade.minieigenHP import Quaternion, Vector3
 
 from ._core import HertzMaterial, Mesh, partner_kind
-from ._records import _load_mesh, _material, _material_record, _new_revision, _set_tag, _store_mesh, _tag, _tags_named
+from ._records import (_engine_options, _load_mesh, _material, _material_record, _new_revision, _set_tag, _store_mesh,
+                       _tag, _tags_named)
 
 
 # --- input checks: each names the argument and runs before anything in the scene changes ---------------
@@ -120,16 +122,24 @@ def _positive_length(value, name):
 
 # --- the public API ---------------------------------------------------------------------------------------
 
-def add_body(mesh, pos, ori=Quaternion.Identity, material=None):
+def add_body(mesh, pos, ori=Quaternion.Identity, material=None, error=None):
     """Adds a rounded body with `mesh` (in its principal frame) centred at `pos` [m], turned by `ori`, made of
     `material` (a HertzMaterial), to the current scene. Returns the new body's id. Mass and principal inertia
-    come from the mesh and the material's density. On bad input nothing is added."""
+    come from the mesh and the material's density. On bad input nothing is added.
+
+    error: a force error the body must keep (a fraction: 0.05 for 5 %, the worse of a plane and a copy, median
+    pose; doc/speed-vs-error.md): the body gets rm.cheapest_model(mesh, error).mesh(), the mesh remeshed to the
+    fewest nodes the study's fits say meet it (once per mesh and target; every body added so shares it), or the
+    mesh itself with a warning when it is too coarse for the target. The engine's options that choice was
+    measured with are ModelChoice.engine_options; a warning says so when the scene's engine has others."""
     if not isinstance(mesh, Mesh):
         raise TypeError(f"mesh: expected a roundedmesh.Mesh, got {mesh!r}")
     pos = _finite_vector(pos, "pos")
     ori = _rotation(ori, "ori")
     material = _require_material(material, "material")
     _require_one_deformable(material, _ALL_KINDS, "material", "bod(ies)")
+    if error is not None:
+        mesh = _mesh_for_error(mesh, error)
 
     body = Body()
     # O.bodies.clump needs a shape and a material on every member (it dereferences both, then uses the
@@ -151,6 +161,19 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None):
     _set_tag(f"body.{body_id}", json.dumps({"mesh": key, "material": _material_record(material)}))
     _new_revision()
     return body_id
+
+
+def _mesh_for_error(mesh, error):
+    """The mesh of rm.cheapest_model(mesh, error), warning when the scene's engine options are not the ones its
+    error was measured with (they belong to rm.engine, not to a body)."""
+    from .study.model_choice import cheapest_model
+    choice = cheapest_model(mesh, error)
+    scene_options = {k: _engine_options()[k] for k in choice.engine_options}
+    if scene_options != choice.engine_options:
+        warnings.warn(f"add_body(error={error}): the mesh's error was measured with rm.engine options "
+                      f"{choice.engine_options}; this scene's engine has {scene_options}: give "
+                      f"rm.engine(**rm.cheapest_model(mesh, {error}).engine_options)", stacklevel=3)
+    return choice.mesh()
 
 
 def add_sphere(pos, radius, material, ori=Quaternion.Identity):
