@@ -188,9 +188,11 @@ _FIT_FLOOR, _NO_FORCE = 1e-4, 0.5
 _NOT_FITTED = ("sphere",)
 
 
-@functools.lru_cache(maxsize=None)
-def _fits(data_key):
-    data = _DATA_BY_KEY[data_key]
+def error_fits(data=None):
+    """{((curvature, regime, law_curvature, normal), statistic, partner): ErrorFit} from the study's computed-
+    curvature configurations of every shape but the sphere (ErrorFit; at least 4 points each). A few hundred numbers:
+    computed on each call."""
+    data = study_data() if data is None else data
     points = {}
     for shape, entries in data["shapes"].items():
         for entry in entries:
@@ -211,18 +213,6 @@ def _fits(data_key):
         sigma = float(np.std(y - (log_c + alpha * x), ddof=2)) if len(pairs) > 2 else 0.0
         fits[key] = ErrorFit(float(log_c), float(alpha), sigma, len(pairs))
     return fits
-
-
-_DATA_BY_KEY = {}
-
-
-def error_fits(data=None):
-    """{((curvature, regime, law_curvature, normal), statistic, partner): ErrorFit} from the study's computed-
-    curvature configurations of every shape (ErrorFit; at least 4 points each)."""
-    data = study_data() if data is None else data
-    key = id(data)
-    _DATA_BY_KEY[key] = data
-    return _fits(key)
 
 
 def _check(error, partner, pose_statistic):
