@@ -114,12 +114,17 @@ void requireReadablePly(const std::string& path, std::uintmax_t fileSize) {
     if (keyword == "format") {
       words >> format;
     } else if (keyword == "element") {
-      std::string name;
+      std::string name, countWord;
+      words >> name >> countWord;
       double count = -1;
-      words >> name >> count;
+      std::istringstream(countWord) >> count;
       if (!(count >= 0 && count <= double(fileSize)))
         refuse("declares " + std::to_string(count) + " elements '" + name + "' in a file of " +
                std::to_string(fileSize) + " bytes");
+      // CGAL reads the count as a std::size_t, where "-1e..." is 2^64 - 1 (a loop without end) and "7x" is 7,
+      // while a double reads the first as 0: only a whole number is the same count to both.
+      if (countWord.find_first_not_of("0123456789") != std::string::npos)
+        refuse("declares the element count '" + countWord + "' for '" + name + "': not a whole number");
       elements.push_back({name, static_cast<std::uintmax_t>(count), {}});
     } else if (keyword == "property") {
       if (elements.empty()) refuse("declares a property before any element");

@@ -75,12 +75,16 @@ TEST(FuzzRegression, OffColourMissingFromItsLineIsRefused) {
 
 // ply_reader_fuzzer: CGAL's PLY reader trusts the header. A vertex coordinate declared uint32 was cast to the
 // float it expects and the null result dereferenced; a negative element count ran its loops for 2^64
-// elements (a timeout) or sized its arrays by it (3 GB asked by a 300-byte file).
+// elements (a timeout) or sized its arrays by it (3 GB asked by a 300-byte file), and so did a count that is not a
+// whole number ("-1end..."), which a double reads as 0.
 TEST(FuzzRegression, PlyHeadersCgalWouldTrustAreRefused) {
   for (const auto& [file, line] : {std::pair<std::string, std::string>{"integer_coordinate.ply", "5 declares the "
                                                                        "vertex coordinate x as 'uint32'"},
                                    {"huge_element_count.ply", "3 declares -5.000000 elements 'vertex'"},
-                                   {"slow_element_count.ply", "4 declares -1.000000 elements 'vert'"}}) {
+                                   {"slow_element_count.ply", "4 declares -1.000000 elements 'vert'"},
+                                   // issue 27's CI run: "-1end_hea.0" reads 0 as a double, 2^64 - 1 to CGAL
+                                   {"element_count_not_a_number.ply", "3 declares the element count '-1end_hea.0' "
+                                                                      "for 'vert': not a whole number"}}) {
     const std::string message = refusal([&] { readMeshFile(kData + file); });
     EXPECT_EQ(message.rfind(kData + file + ": PLY header line " + line, 0), 0u) << message;
   }
