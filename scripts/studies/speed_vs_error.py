@@ -40,6 +40,7 @@ import numpy as np
 
 from roundedmesh.export import write_csv
 from roundedmesh.study import grains, shape_error as se
+from roundedmesh.study.model_choice import variant_label
 from roundedmesh.study.validation import pair_poses
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -62,12 +63,6 @@ VARIANTS = (("computed", "auto", "mean", "pressure"), ("computed", "quadrature",
             ("computed", "auto", "principal", "pressure"),
             ("computed", "auto", "mean", "energy"), ("prescribed", "auto", "mean", "pressure"),
             ("prescribed", "auto", "principal", "pressure"))
-
-
-def variant_label(curvature, regime, law_curvature, normal):
-    """'curvature computed, auto' for the law's defaults, then ', principal' (Hertz's ellipse) or ', energy'."""
-    return ", ".join([f"curvature {curvature}", regime] + ([law_curvature] if law_curvature != "mean" else [])
-                     + ([normal] if normal != "pressure" else []))
 
 
 def configurations(shape, family, quick):

@@ -276,7 +276,7 @@ def estimated_cost(nodes, regime, data):
     ('auto' if that regime was not timed): a power law through them (cost grows about linearly with the nodes).
     None without costs."""
     timed = [e for e in data["shapes"].get("gummy_bear", []) if e["cost_ms_per_step"] is not None
-             and e["curvature"] == "computed" and e["cost_from"] == _label(e)]
+             and e["curvature"] == "computed" and e["cost_from"] == variant_label(*variant(e))]
     chosen = [e for e in timed if e["regime"] == regime] or [e for e in timed if e["regime"] == "auto"]
     if len(chosen) < 2:
         return None
@@ -285,10 +285,10 @@ def estimated_cost(nodes, regime, data):
     return float(math.exp(intercept + slope * math.log(nodes)))
 
 
-def _label(entry):
-    """The study's label of an entry (scripts/studies/speed_vs_error.py variant_label)."""
-    curvature, regime, law, normal = variant(entry)
-    return ", ".join([f"curvature {curvature}", regime] + ([law] if law != "mean" else [])
+def variant_label(curvature, regime, law_curvature, normal):
+    """The study's name of a roundedmesh configuration (errors.csv, costs.csv, cost_from): 'curvature computed,
+    auto' for the law's defaults, then ', principal' (Hertz's ellipse) or ', energy'."""
+    return ", ".join([f"curvature {curvature}", regime] + ([law_curvature] if law_curvature != "mean" else [])
                      + ([normal] if normal != "pressure" else []))
 
 
