@@ -119,9 +119,10 @@ def rotation_matrices(q):
                      np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1)], -2)
 
 
-def packing_picture(axes, root, run, radius, colour):
+def packing_picture(axes, root, run, radius, colour, view=(12, -60)):
     """Draws the final packing of `run` on 3D axes: every body's surface, lit from the viewer's side, the
-    triangles facing away from the viewer left out."""
+    triangles facing away from the viewer left out; `colour` one colour or a list cycled over the bodies, `view`
+    (elevation, azimuth) [degrees]."""
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
     state = read_csv(os.path.join(root, run, "final_state.csv"))
     positions = np.array([[float(r[k]) for k in ("x_m", "y_m", "z_m")] for r in state])
@@ -131,12 +132,14 @@ def packing_picture(axes, root, run, radius, colour):
     faces = world[:, triangles].reshape(-1, 3, 3)
     normals = np.cross(faces[:, 1] - faces[:, 0], faces[:, 2] - faces[:, 0])
     normals /= np.linalg.norm(normals, axis=1, keepdims=True)
-    elevation, azimuth = np.radians(12), np.radians(-60)
+    elevation, azimuth = np.radians(view)
     viewer = np.array([np.cos(elevation) * np.cos(azimuth), np.cos(elevation) * np.sin(azimuth), np.sin(elevation)])
     facing = normals @ viewer > 0
     light = normals[facing] @ (viewer + np.array([0, 0, 0.6])) / np.linalg.norm(viewer + np.array([0, 0, 0.6]))
     import matplotlib.colors
-    base = np.array(matplotlib.colors.to_rgb(colour))
+    colours = [colour] if isinstance(colour, str) else colour
+    base = np.array([matplotlib.colors.to_rgb(colours[b % len(colours)]) for b in range(len(positions))])
+    base = np.repeat(base, len(triangles), axis=0)[facing]
     shade = np.clip(0.35 + 0.65 * light, 0, 1)[:, None] * base
     axes.add_collection3d(Poly3DCollection(faces[facing] * 1e3, facecolors=shade, edgecolors="none"))
     axes.set(xlim=(-200, 200), ylim=(-200, 200), zlim=(0, 300), xticks=[-200, 0, 200], yticks=[-200, 0, 200],
@@ -149,6 +152,8 @@ def packing_picture(axes, root, run, radius, colour):
 
 def packings_figure(root, runs, radius):
     plt = _pyplot()
+    if len(runs) == 1:  # one run (tools/setup demo): a picture large and close enough to tell the bodies apart
+        return packing_closeup(plt, root, runs[0], radius)
     columns = min(4, len(runs))
     rows = math.ceil(len(runs) / columns)
     figure = plt.figure(figsize=(3.2 * columns, 3.4 * rows))
@@ -158,6 +163,27 @@ def packings_figure(root, runs, radius):
     figure.suptitle("S1, the packings at the end (Fig. 10)\nside view, box 400 mm wide [mm]", fontsize=10)
     figure.tight_layout()
     figure.savefig(os.path.join(root, "fig10_packings.png"), dpi=110)
+    plt.close(figure)
+
+
+GUMMY_COLOURS = ("#d62728", "#ff7f0e", "#f2c500", "#2ca02c", "#f7f2e0", "#9467bd")  # a bag's red ... white
+
+
+def packing_closeup(plt, root, run, radius):
+    """fig10_packings.png of a single run: 1440 x 1080 pixels, seen from 40 degrees above the box's edge, each body
+    in one of six colours."""
+    figure = plt.figure(figsize=(12, 9))
+    axes = figure.add_axes((0, 0, 1, 0.95), projection="3d")
+    packing_picture(axes, root, run, radius, GUMMY_COLOURS if run.startswith("gummy_bear") else
+                    "0.75" if run == "sphere" else STYLES.get(run, ("C7",))[0], view=(40, -60))
+    heights = [float(r["z_m"]) for r in read_csv(os.path.join(root, run, "final_state.csv"))]
+    top = 1e3 * (max(heights) + 2 * radius)
+    axes.set(zlim=(0, top), zticks=[0, 50, 100] if top > 100 else [0, 50])
+    axes.set_box_aspect((1, 1, top / 400), zoom=1.2)
+    axes.set_title("")
+    figure.suptitle(f"S1: {len(heights)} {LABELS.get(run, run)} at the end of the run, box 400 mm wide [mm]",
+                    fontsize=13)
+    figure.savefig(os.path.join(root, "fig10_packings.png"), dpi=120)
     plt.close(figure)
 
 
