@@ -617,6 +617,8 @@ def run_one(args, run):
     print(f"final: mean height {heights.mean():.4f} m, max {heights.max():.4f} m above the floor; "
           f"P({SUBMERGED_HEIGHT:.2f} m) = {at_submerged:.1f} %; largest pair overlap {largest:.3f} r")
     print(f"wrote height.csv, packing.csv, final_state.csv, timing.csv, height.png and vtk/{run}.pvd to {folder}")
+    print(f"ParaView: open {os.path.join(folder, 'vtk', run + '.pvd')}, the run as a time series of {args.frames} "
+          "frames (the bodies' surfaces; the contact force on each triangle is the cell data 'contact_force')")
     print(f"machine: {machine()}\ncommand: {command}")
 
 
