@@ -176,6 +176,7 @@ def packing_closeup(plt, root, run, radius):
     axes = figure.add_axes((0, 0, 1, 0.95), projection="3d")
     packing_picture(axes, root, run, radius, GUMMY_COLOURS if run.startswith("gummy_bear") else
                     "0.75" if run == "sphere" else STYLES.get(run, ("C7",))[0], view=(40, -60))
+    axes.collections[-1].set_clip_on(False)  # the zoomed box reaches past the axes' square
     heights = [float(r["z_m"]) for r in read_csv(os.path.join(root, run, "final_state.csv"))]
     top = 1e3 * (max(heights) + 2 * radius)
     axes.set(zlim=(0, top), zticks=[0, 50, 100] if top > 100 else [0, 50])
