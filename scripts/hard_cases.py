@@ -321,7 +321,7 @@ def parse(argv):
 def main(argv):
     args = parse(argv)
     os.makedirs(args.output, exist_ok=True)
-    from roundedmesh.study.benchmarking import machine
+    from roundedmesh_study.benchmarking import machine
     command = shlex.join([sys.executable] + sys.argv)
     print(f"machine: {machine()}\ncommand: {command}", flush=True)
     report = Report()

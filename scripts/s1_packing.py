@@ -18,10 +18,10 @@ Runs, each in its own process and folder <output>/<run>:
     pear, gummy_bear
                   Mesh.reference_shape (~486 and ~554 nodes asked)
     gummy_bear_clumps, gummy_bear_level_sets (--peers clumps level_sets)
-                  YADE's own representations of the gummy bear on the same scene (roundedmesh.study.peers): 40-sphere
+                  YADE's own representations of the gummy bear on the same scene (roundedmesh_study.peers): 40-sphere
                   clumps of the shape's primitives and level-set bodies of its distance field (1 mm grid, 511
                   surface nodes), with YADE's Hertz-Mindlin law, its damping ratio matched to Eq. 7 at the
-                  overlap under one bear's weight (the mapping: roundedmesh.study.peers and doc/s1-packing.md)
+                  overlap under one bear's weight (the mapping: roundedmesh_study.peers and doc/s1-packing.md)
 Every body has the volume of the sphere of radius 0.025 m. Materials (S1): particles E = 1e6 Pa, nu = 0.4,
 2000 kg/m^3; box E = 5e6 Pa, nu = 0.4; normal damping constant A = 0.01 s (Eq. 7) on both; no friction.
 NewtonIntegrator without numerical damping, gravity (0, 0, -9.81) m/s^2. The lattice: layers of 4 x 4 nodes at
@@ -229,8 +229,8 @@ from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.export import VtkSeries  # noqa: E402
 from roundedmesh.progress import Progress  # noqa: E402
-from roundedmesh.study import peers  # noqa: E402
-from roundedmesh.study.benchmarking import machine  # noqa: E402
+from roundedmesh_study import peers  # noqa: E402
+from roundedmesh_study.benchmarking import machine  # noqa: E402
 
 PARTICLE = rm.HertzMaterial(young=peers.PARTICLE["young"], poisson=peers.PARTICLE["poisson"],
                             density=peers.PARTICLE["density"], damping=peers.DAMPING_CONSTANT)
@@ -299,7 +299,7 @@ def build_roundedmesh(run, poses, normal="pressure"):
 
 
 def build_peer(run, poses):
-    """YADE's own representation `run` at `poses` (roundedmesh.study.peers; the walls are bodies 0-4)."""
+    """YADE's own representation `run` at `poses` (roundedmesh_study.peers; the walls are bodies 0-4)."""
     if run.endswith("_clumps"):
         bodies = peers.build_clumps(poses, count=40, name=PEER_SHAPE)
         description = "40-sphere clumps, YADE's Hertz-Mindlin"

@@ -17,6 +17,7 @@ from yade import Sphere as YadeSphere
 from yade.minieigenHP import Quaternion, Vector3
 
 from ._core import HertzMaterial, Mesh, partner_kind
+from .model_choice import cheapest_model
 from ._records import (_engine_options, _load_mesh, _material, _material_record, _new_revision, _set_tag, _store_mesh,
                        _tag, _tags_named)
 
@@ -130,7 +131,8 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None, error=None):
     error: a force error the body must keep (a fraction: 0.05 for 5 %, the worse of a plane and a copy, median
     pose; doc/speed-vs-error.md): the body gets rm.cheapest_model(mesh, error).mesh(), the mesh remeshed to the
     fewest nodes the study's fits say meet it (once per mesh and target; every body added so shares it), or the
-    mesh itself with a warning when it is too coarse for the target. The engine's options that choice was
+    mesh itself when it has about those nodes; a ValueError naming the nodes needed when it is too coarse for the
+    target. The engine's options that choice was
     measured with are ModelChoice.engine_options; a warning says so when the scene's engine has others."""
     if not isinstance(mesh, Mesh):
         raise TypeError(f"mesh: expected a roundedmesh.Mesh, got {mesh!r}")
@@ -166,7 +168,6 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None, error=None):
 def _mesh_for_error(mesh, error):
     """The mesh of rm.cheapest_model(mesh, error), warning when the scene's engine options are not the ones its
     error was measured with (they belong to rm.engine, not to a body)."""
-    from .study.model_choice import cheapest_model
     choice = cheapest_model(mesh, error)
     scene_options = {k: _engine_options()[k] for k in choice.engine_options}
     if scene_options != choice.engine_options:

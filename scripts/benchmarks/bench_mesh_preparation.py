@@ -12,7 +12,7 @@ import yade  # noqa: F401  (roundedmesh needs YADE's converters)
 
 import roundedmesh as rm
 from roundedmesh import shapes
-from roundedmesh.study.benchmarking import machine, median_cpu_ms
+from roundedmesh_study.benchmarking import machine, median_cpu_ms
 
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir, "tests", "data")
 

@@ -12,8 +12,8 @@ import numpy as np
 from yade import O
 
 import roundedmesh as rm
-from roundedmesh.study.benchmarking import machine, step_times_ms
-from roundedmesh.study.scenes import build_bouncing_sphere
+from roundedmesh_study.benchmarking import machine, step_times_ms
+from roundedmesh_study.scenes import build_bouncing_sphere
 
 
 def main(argv):

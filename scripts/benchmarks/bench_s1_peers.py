@@ -1,6 +1,6 @@
 """Whole-step cost of the gummy bear in scene S1 (doc/scenes.md) at the poses of a settled packing, timed in one
 process: as roundedmesh's rounded bodies, and as YADE's own representations, clumps of spheres, level-set bodies
-and plain spheres of the volume-equivalent radius, each with YADE's Hertz-Mindlin law (roundedmesh.study.peers). The
+and plain spheres of the volume-equivalent radius, each with YADE's Hertz-Mindlin law (roundedmesh_study.peers). The
 figures our engine's speed is stated against.
 
     /usr/bin/python3 scripts/benchmarks/bench_s1_peers.py [--shape gummy_bear] [--poses bench/data/s1_settled.csv]
@@ -12,7 +12,7 @@ figures our engine's speed is stated against.
 
 One process, one thread (the script restarts itself with OMP_NUM_THREADS=1 if that is not set), one
 representation after the other: build at the poses (O is reset), run --warmup steps, then time --blocks blocks
-(roundedmesh.study.benchmarking.step_times_ms) and one more block with YADE's per-engine timing (O.timingEnabled).
+(roundedmesh_study.benchmarking.step_times_ms) and one more block with YADE's per-engine timing (O.timingEnabled).
 Level sets are opt-in (--peers ... levelset): they cost tens of ms per step. roundedmesh-principal is roundedmesh
 with rm.engine(curvature='principal'), the elliptical contact (issue 13).
 
@@ -23,11 +23,11 @@ Clumps and level sets keep the packing of the poses (their contacts at the end a
 the warm-up); spheres at the bears' centres are no packing and rearrange within a few hundredths of a second,
 so theirs is the cost of 250 spheres settling in the box (the contact counts before and after are printed).
 
---shape: the gummy bear (default) or a study grain of the speed-against-error study (roundedmesh.study.grains.NAMES:
+--shape: the gummy bear (default) or a study grain of the speed-against-error study (roundedmesh_study.grains.NAMES:
 'spheroid', 'pill', 'tetra_grain'), at the poses of its own settled packing, bench/data/s1_settled_<shape>.csv by
 default (bench_shaken_bears.py --shape, then record_s1_scene.py). A grain's roundedmesh bodies are
 grains.grain(shape).mesh(--nodes), default its reference mesh of grains.REFERENCE_NODES = 600 nodes, the mesh
-the packing was settled with; its clumps and level sets are those of roundedmesh.study.peers (an inscribed-sphere
+the packing was settled with; its clumps and level sets are those of roundedmesh_study.peers (an inscribed-sphere
 fill and the level set of its 2200-node mesh). Spheres are the volume-equivalent ones, whatever the shape. A
 grain's coarse clumps are much smaller than its mesh and start nearly out of touch (the pill's 10-sphere clumps:
 27 touching pairs after the warm-up, 839 at the end, against the rounded bodies' 1010), so their cost is that of
@@ -63,8 +63,8 @@ from yade import O  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.progress import Progress  # noqa: E402
-from roundedmesh.study import grains, peers  # noqa: E402
-from roundedmesh.study.benchmarking import machine, step_times_ms  # noqa: E402
+from roundedmesh_study import grains, peers  # noqa: E402
+from roundedmesh_study.benchmarking import machine, step_times_ms  # noqa: E402
 
 STATE_COLUMNS = ["x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz"]
 ENGINES = ["ForceResetter", "InsertionSortCollider", "InteractionLoop", "roundedmesh PyRunner", "NewtonIntegrator"]

@@ -11,7 +11,7 @@ engine split into its C++ step, its Python wrapper and the PyRunner that calls i
         [--threads 1 2] [--blocks 5] [--block-steps 200] [--warmup 100]
 
 --shape: the bodies, 'gummy_bear' (Mesh.reference_shape("gummy_bear", 554)) or a study grain of the
-speed-against-error study (roundedmesh.study.grains.NAMES: 'spheroid', 'pill', 'tetra_grain'), whose mesh is
+speed-against-error study (roundedmesh_study.grains.NAMES: 'spheroid', 'pill', 'tetra_grain'), whose mesh is
 grains.grain(name).mesh(grains.REFERENCE_NODES = 600), curvature computed: the same lattice, jitter, random
 orientations (--seed), materials, box and gravity, so that every shape's packing is S1's. The default output
 folder is out/bench_shaken_bears for the bear and out/bench_shaken_bears_<shape> for a grain.
@@ -50,8 +50,8 @@ from yade.minieigenHP import Quaternion
 import roundedmesh as rm
 import roundedmesh.scene  # noqa: F401  (the engine's step, wrapped for timing in --measure)
 from roundedmesh.progress import Progress
-from roundedmesh.study import benchmarking, grains
-from roundedmesh.study.benchmarking import machine
+from roundedmesh_study import benchmarking, grains
+from roundedmesh_study.benchmarking import machine
 
 # Scene S1 (doc/scenes.md); the box stands still here.
 RADIUS = 0.025                      # volume-equivalent radius [m]

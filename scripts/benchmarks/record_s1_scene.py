@@ -18,7 +18,7 @@ floor as S1 shakes the box, z = A sin(2 pi t / T) (A = 0.025 m, T = 0.25 s), and
     /usr/bin/python3 scripts/benchmarks/record_s1_scene.py [--settled out/bench_shaken_bears/settled.yade.gz]
                                                            [--steps 200]
 
-A packing of a study grain (roundedmesh.study.grains.NAMES), settled by bench_shaken_bears.py --shape <name>, is
+A packing of a study grain (roundedmesh_study.grains.NAMES), settled by bench_shaken_bears.py --shape <name>, is
 written alone, as bench/data/s1_settled_<name>.csv (its 'shape' column the grain's name): the speed-against-error
 study times YADE's peers at its poses (scripts/benchmarks/bench_s1_peers.py --shape <name>); the mesh file and the
 trajectories are the C++ benchmark's, which runs the bear only.
@@ -49,7 +49,7 @@ from yade import O, PyRunner
 
 import roundedmesh as rm
 from roundedmesh.progress import Progress
-from roundedmesh.study import grains
+from roundedmesh_study import grains
 
 AMPLITUDE, PERIOD = 0.025, 0.25  # S1's shaking [m], [s]
 HEADER = b"roundedmesh trajectory 1\n"
@@ -102,7 +102,7 @@ def write_settled(bears, path, shape="gummy_bear", made_by=()):
         f.write(f"# S1 settled packing of {len(bears)} {plural} (doc/scenes.md), t = {O.time:.6g} s, "
                 f"dt = {O.dt:g} s; written by scripts/benchmarks/record_s1_scene.py\n")
         mesh = ("bench/data/gummy_bear.mesh" if shape == "gummy_bear" else
-                f"roundedmesh.study.grains.grain({shape!r}).mesh({grains.REFERENCE_NODES}), curvature computed")
+                f"roundedmesh_study.grains.grain({shape!r}).mesh({grains.REFERENCE_NODES}), curvature computed")
         f.write(f"# shape: {shape} ({mesh}) or wall<axis><sense> (a YADE Wall); quaternion body -> global, of the "
                 "mesh's principal frame\n")
         for line in made_by:

@@ -22,8 +22,8 @@ import numpy as np  # noqa: E402
 from yade import O, PyRunner  # noqa: E402
 
 from roundedmesh.export import VtkSeries  # noqa: E402
-from roundedmesh.study.analytic import apex_heights, bouncing_sphere, nrmse  # noqa: E402
-from roundedmesh.study.scenes import S3, build_bouncing_sphere, trace_height  # noqa: E402
+from roundedmesh_study.analytic import apex_heights, bouncing_sphere, nrmse  # noqa: E402
+from roundedmesh_study.scenes import S3, build_bouncing_sphere, trace_height  # noqa: E402
 
 SUBDIVISIONS = {42: 1, 162: 2, 642: 3}
 

@@ -34,7 +34,7 @@ They are placed as such drums are filled, by growing them from the lattice (init
      to 0.5 mm, seeded, each with a seeded uniformly random orientation; at 0.34 of their size no two bodies'
      bounding spheres overlap, nor one and the drum;
   2. YADE's own bodies, fast: each body as a clump of spheres inside it (the 40 spheres of
-     roundedmesh.study.peers.clump_spheres for a bear; 15 spheres on the pear's axis, each reaching the mesh's nearest
+     roundedmesh_study.peers.clump_spheres for a bear; 15 spheres on the pear's axis, each reaching the mesh's nearest
      node), each YADE sphere as itself, at 0.34 of their size on the lattice, grow to their size in the drum
      (utils.growParticles, 40 equal factors, 250 steps after each) without gravity or friction, then relax until
      no two overlap by more than 0.1 mm. Fixed spheres of 3 mm along the lifters' ridges keep the ridges from
@@ -72,9 +72,9 @@ Outputs, in <out>/<run> (run: roundedmesh, or clumps with --peers clumps):
 At the end the time per step is printed, beside that of the other run when <out> has one.
 
 --peers clumps runs the same drum from the same poses filled with YADE's own bodies instead: each gummy bear a
-40-sphere clump (roundedmesh.study.peers.clump_spheres, add_clump: the shape's mass), each pear the clump of its two
+40-sphere clump (roundedmesh_study.peers.clump_spheres, add_clump: the shape's mass), each pear the clump of its two
 primitive spheres, the spheres YADE spheres, under YADE's Hertz-Mindlin (Ip2_FrictMat_FrictMat_MindlinPhys with
-the friction angle atan(0.5) and roundedmesh.study.peers' damping ratios) with InsertionSortCollider and
+the friction angle atan(0.5) and roundedmesh_study.peers' damping ratios) with InsertionSortCollider and
 Ig2_Facet_Sphere_ScGeom for the drum. --threads sets the OpenMP threads of the roundedmesh engine and of YADE's
 loops: the script starts again in a new process with OMP_NUM_THREADS set (run() uses the process's own).
 
@@ -98,8 +98,8 @@ import numpy as np
 import roundedmesh as rm  # imports YADE
 from roundedmesh.export import VtkSeries
 from roundedmesh.progress import Progress
-from roundedmesh.study import peers
-from roundedmesh.study.benchmarking import machine
+from roundedmesh_study import peers
+from roundedmesh_study.benchmarking import machine
 from yade import (Bo1_Facet_Aabb, Bo1_Sphere_Aabb, ForceResetter, FrictMat, Ig2_Facet_Sphere_ScGeom,
                   Ig2_Sphere_Sphere_ScGeom, InsertionSortCollider, InteractionLoop, Ip2_FrictMat_FrictMat_MindlinPhys,
                   Law2_ScGeom_MindlinPhys_Mindlin, MatchMaker, NewtonIntegrator, O, RotationEngine, utils)
@@ -299,7 +299,7 @@ def kinds(seed):
 
 def proxy_spheres(name, mesh):
     """(centres (n, 3) [m], radii (n,) [m]) in the body frame of the spheres that stand for the body of `mesh`
-    while the drum is filled: a bear's 40 clump spheres (roundedmesh.study.peers.clump_spheres), and for the pear
+    while the drum is filled: a bear's 40 clump spheres (roundedmesh_study.peers.clump_spheres), and for the pear
     spheres on the axis through its two primitive spheres, each reaching the mesh's nearest node. Both lie inside the
     body but for its blends (where its nodes stand up to 0.7 mm out of them)."""
     if name != "pear":

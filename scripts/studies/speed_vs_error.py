@@ -1,7 +1,7 @@
 """Speed against error, the error axis (issue 14; doc/speed-vs-error.md): every representation of the sphere, the
 pear and the gummy bear pressed on a rigid plane and on a copy of itself at random orientations, force against
 overlap up to 2 % of r = 25 mm, against Hertz's solution at the smooth shape's contact point
-(roundedmesh.study.hertz_reference, roundedmesh.study.shape_error).
+(roundedmesh_study.hertz_reference, roundedmesh_study.shape_error).
 
     /usr/bin/python3 scripts/studies/speed_vs_error.py [--quick] [--poses N] [--shapes ...] [--families ...]
                                                        [--costs] [--report] [--output out/speed_vs_error]
@@ -39,9 +39,9 @@ import sys
 import numpy as np
 
 from roundedmesh.export import write_csv
-from roundedmesh.study import grains, shape_error as se
-from roundedmesh.study.model_choice import variant_label
-from roundedmesh.study.validation import pair_poses
+from roundedmesh_study import grains, shape_error as se
+from roundedmesh_study.model_table import variant_label
+from roundedmesh_study.validation import pair_poses
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 

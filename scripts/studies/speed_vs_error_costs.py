@@ -13,7 +13,7 @@ YADE's clumps of 10, 20, 40 and 80 spheres; level-set bodies at the study's grid
 Curvature prescribed or computed does not change the work of a step (the same triangle pairs are tested), so the
 computed meshes' cost stands for both.
 
---shapes: the shapes to time, the gummy bear (default) and the study grains (roundedmesh.study.grains.NAMES), each
+--shapes: the shapes to time, the gummy bear (default) and the study grains (roundedmesh_study.grains.NAMES), each
 at its own settled packing of 250 bodies, <poses folder>/s1_settled.csv for the bear and s1_settled_<shape>.csv for
 a grain (scripts/benchmarks/record_s1_scene.py). A grain has roundedmesh meshes of 300, 600, 1100 and 2200 nodes in
 the 'auto' regime only (the bear's regimes differ in cost by less than one run's noise), clumps of 10 to 160
@@ -35,7 +35,7 @@ import subprocess
 import sys
 
 from roundedmesh.export import write_csv
-from roundedmesh.study import grains
+from roundedmesh_study import grains
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCRIPTS = os.path.join(HERE, os.pardir)

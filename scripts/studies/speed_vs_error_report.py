@@ -37,9 +37,9 @@ Writes to --output:
     guide_summary.md     one row per shape: the cheapest (without costs the fewest-node) roundedmesh at 1, 5 and 20 %
                          and the cheapest clump and level set at 5 % (median pose)
     speed_vs_error.json  every roundedmesh configuration of every shape with its errors (fractions) and cost, and the
-                         resolution of each mesh (model_choice.mesh_resolution): the data of
-                         roundedmesh.study.model_choice; --package-data also writes it to py/roundedmesh/study/,
-                         where the helper reads it
+                         resolution of each mesh (roundedmesh.model_choice.mesh_resolution): the study's data;
+                         --package-data also writes it to py/roundedmesh_study/ (roundedmesh_study.model_table) and
+                         the table rm.cheapest_model reads, made from it, to py/roundedmesh/model_table.json
 """
 import argparse
 import csv
@@ -50,9 +50,9 @@ import shutil
 import sys
 
 from roundedmesh.export import write_csv
+from roundedmesh_study import model_table
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.join(HERE, os.pardir, os.pardir)  # the repository
 _spec = importlib.util.spec_from_file_location("speed_vs_error", os.path.join(HERE, "speed_vs_error.py"))
 _errors = importlib.util.module_from_spec(_spec)   # the error axis's script: its shapes, families and labels
 _spec.loader.exec_module(_errors)
@@ -455,8 +455,8 @@ def fraction(percent):
 def resolutions(shapes):
     """{shape: {str(N): {'median': q, 'worst': q}}}: model_choice.mesh_resolution of the study's mesh of N nodes
     (shape_error.rounded_mesh, computed curvature) for every roundedmesh node count of the shape."""
-    from roundedmesh.study.model_choice import mesh_resolution
-    import roundedmesh.study.shape_error as se
+    from roundedmesh.model_choice import mesh_resolution
+    import roundedmesh_study.shape_error as se
     result = {}
     for shape, rows in shapes.items():
         for nodes in sorted({r["size"] for r in rows if r["family"] == "roundedmesh"}):
@@ -498,8 +498,8 @@ def main(argv=None):
                              "(default: <input>/costs.csv)")
     parser.add_argument("--output", default=os.path.join("out", "speed_vs_error"))
     parser.add_argument("--package-data", action="store_true",
-                        help="also write py/roundedmesh/study/speed_vs_error.json, the data "
-                             "roundedmesh.study.model_choice reads")
+                        help="also write py/roundedmesh_study/speed_vs_error.json, the study's data, and "
+                             "py/roundedmesh/model_table.json, the table rm.cheapest_model reads")
     args = parser.parse_args(argv)
     errors_path = os.path.join(args.input, "errors.csv")
     if not os.path.exists(errors_path):
@@ -519,12 +519,14 @@ def main(argv=None):
     for name, content in (("guide.md", text), ("guide_summary.md", short)):
         with open(os.path.join(args.output, name), "w") as f:
             f.write(content)
-    data = os.path.join(args.output, "speed_vs_error.json")
-    with open(data, "w") as f:
-        json.dump(package_data(shapes, regimes, machines), f, indent=1)
+    data = package_data(shapes, regimes, machines)
+    path = os.path.join(args.output, "speed_vs_error.json")
+    with open(path, "w") as f:
+        json.dump(data, f, indent=1)
         f.write("\n")
     if args.package_data:
-        shutil.copyfile(data, os.path.join(ROOT, "py", "roundedmesh", "study", "speed_vs_error.json"))
+        shutil.copyfile(path, model_table.DATA)
+        model_table.write_model_table(data=data)
     print(text)
     print(short)
 

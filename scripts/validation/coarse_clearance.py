@@ -35,7 +35,7 @@ from yade.minieigenHP import Vector3  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.export import write_csv  # noqa: E402
-from roundedmesh.study.benchmarking import machine  # noqa: E402
+from roundedmesh_study.benchmarking import machine  # noqa: E402
 from deep_monotonicity import random_orientations  # noqa: E402  (this folder)
 
 RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000)

@@ -31,7 +31,7 @@ import scipy.sparse as sparse  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.export import write_csv  # noqa: E402
-from roundedmesh.study.benchmarking import machine  # noqa: E402
+from roundedmesh_study.benchmarking import machine  # noqa: E402
 
 ESTIMATES = ("eq1", "principal", "smooth1", "smooth2", "quadric2", "quadric3")
 

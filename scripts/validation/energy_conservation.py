@@ -55,8 +55,8 @@ from yade import ForceResetter, NewtonIntegrator, O, PyRunner  # noqa: E402
 from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
-from roundedmesh.study.analytic import effective_modulus  # noqa: E402
-from roundedmesh.study.benchmarking import machine  # noqa: E402
+from roundedmesh_study.analytic import effective_modulus  # noqa: E402
+from roundedmesh_study.benchmarking import machine  # noqa: E402
 
 PARTICLE = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=0, friction=0)
 WALL = rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=0, friction=0)

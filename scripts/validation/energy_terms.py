@@ -59,7 +59,7 @@ sys.modules[_spec.name] = energy
 _spec.loader.exec_module(energy)
 
 import roundedmesh as rm  # noqa: E402
-from roundedmesh.study.benchmarking import machine  # noqa: E402
+from roundedmesh_study.benchmarking import machine  # noqa: E402
 from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 
 CASES = ("sphere-sphere", "bear-bear", "bear-pear", "bear-wall")

@@ -22,8 +22,8 @@ import numpy as np  # noqa: E402
 from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
-from roundedmesh.study.analytic import hertz_force  # noqa: E402
-from roundedmesh.study.benchmarking import machine  # noqa: E402
+from roundedmesh_study.analytic import hertz_force  # noqa: E402
+from roundedmesh_study.benchmarking import machine  # noqa: E402
 
 RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000)
 RADIUS = 0.025  # volume-equivalent radius of both shapes [m]

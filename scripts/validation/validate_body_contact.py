@@ -1,5 +1,5 @@
 """Body-body contact against Hertz (paper Sections 3.1.1 and 3.2): two rounded bodies pressed together along z,
-force against overlap, with the scenes of roundedmesh.study.validation (E* = 0.5 Pa: both bodies E = 1 Pa, nu = 0;
+force against overlap, with the scenes of roundedmesh_study.validation (E* = 0.5 Pa: both bodies E = 1 Pa, nu = 0;
 curvature prescribed unless said).
 
     /usr/bin/python3 scripts/validation/validate_body_contact.py [--output out/body_contact] [--only fig3 fig7 ...]
@@ -45,8 +45,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from roundedmesh.export import write_csv  # noqa: E402
-from roundedmesh.study import validation as v  # noqa: E402
-from roundedmesh.study.analytic import nrmse  # noqa: E402
+from roundedmesh_study import validation as v  # noqa: E402
+from roundedmesh_study.analytic import nrmse  # noqa: E402
 
 SPHERE_NODES = {42: 1, 162: 2, 642: 3, 2562: 4}
 SPHERE_POSES = 6
@@ -363,7 +363,7 @@ def figure_8(output):
 def figure_6(output):
     """S4 friction ramp (scenes.friction_ramp), 162 and 642 nodes, under the tangential spring (the default) and the
     paper's viscous law, against the Coulomb law F_t = min(F_A, mu m g)."""
-    from roundedmesh.study import scenes
+    from roundedmesh_study import scenes
     figure, axis = plt.subplots(figsize=(6, 4.5))
     lines = ["S4 friction ramp: applied force F_A / F_max at which sliding starts; largest |F_t - F_A| / F_max before "
              "F_A = 0.9 F_max (the ramp's inertia)", "nodes  law      F_A/F_max  before 0.9"]

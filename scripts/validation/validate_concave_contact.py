@@ -74,7 +74,7 @@ from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 import roundedmesh as rm  # noqa: E402
 from roundedmesh import shapes  # noqa: E402
 from roundedmesh.export import write_csv  # noqa: E402
-from roundedmesh.study import analytic, hertz_reference as hr, peers  # noqa: E402
+from roundedmesh_study import analytic, hertz_reference as hr, peers  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # the repository
 SHAPE = "gummy_bear"

@@ -12,7 +12,7 @@ at the smooth pear's principal radii at the contact point, with the same E'. The
 
 The contact point: the pear of Mesh.reference_shape('pear', nodes) is turned by --orientations seeded uniform random
 rotations and lowered along -z onto the plate; among the orientations where Hertz holds (a single convex contact:
-roundedmesh.study.shape_error.press_geometry), the one whose ratio of principal radii r_major / r_minor is nearest
+roundedmesh_study.shape_error.press_geometry), the one whose ratio of principal radii r_major / r_minor is nearest
 --ratio. The pear of shapes.json is two spheres blended: wherever Hertz holds it touches the plate on one of its
 spheres, with equal principal radii (of 400 orientations, 342 touch a sphere and 58 the blend, whose curvature turns
 within the contact: no Hertz reference there), so the paper's ratio of 1.6 is not reached and the nearest, 1.00, is
@@ -47,10 +47,10 @@ from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.export import write_csv  # noqa: E402
-from roundedmesh.study import hertz_reference as hr  # noqa: E402
-from roundedmesh.study.analytic import effective_modulus, nrmse  # noqa: E402
-from roundedmesh.study.benchmarking import machine  # noqa: E402
-from roundedmesh.study.shape_error import SmoothShape, press_geometry, rounded_mesh  # noqa: E402
+from roundedmesh_study import hertz_reference as hr  # noqa: E402
+from roundedmesh_study.analytic import effective_modulus, nrmse  # noqa: E402
+from roundedmesh_study.benchmarking import machine  # noqa: E402
+from roundedmesh_study.shape_error import SmoothShape, press_geometry, rounded_mesh  # noqa: E402
 
 HEIGHT = 0.070                    # the pear's height in the scene [m]
 APPARENT_MODULUS = 26.26e6        # E' = E / (1 - nu^2) [Pa], the paper's

@@ -1,7 +1,7 @@
 """A gummy bear at rest on every flat partner (issue 21; doc/validation.md, "Resting on a Wall, a Box and Facets"):
 dropped from 5 mm in random orientations onto a fixed YADE Wall, a YADE Box (0.1 m thick) and a floor of two YADE
 Facets, all at z = 0, with S1's materials, mu = 0.5 and c = 100 N s/m (the slope scene's,
-roundedmesh.study.scenes.SLOPE). It settles for `settle` seconds; then its drift (how far its centre moves) over
+roundedmesh_study.scenes.SLOPE). It settles for `settle` seconds; then its drift (how far its centre moves) over
 `duration` seconds, and the force the partner carries against the bear's weight. A Box used to stop such runs on
 phantom overlaps of its far faces.
 
@@ -25,7 +25,7 @@ import numpy as np  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.export import write_csv  # noqa: E402
-from roundedmesh.study import scenes  # noqa: E402
+from roundedmesh_study import scenes  # noqa: E402
 from yade import ForceResetter, NewtonIntegrator, O, utils  # noqa: E402
 from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 

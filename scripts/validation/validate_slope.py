@@ -1,5 +1,5 @@
 """Friction that holds (doc/validation.md, "Friction on a slope"): the gummy bear and the pear on a slope
-(roundedmesh.study.scenes.build_slope: S1's materials, mu = 0.5, c = 100 N s/m, gravity tilted), under the default
+(roundedmesh_study.scenes.build_slope: S1's materials, mu = 0.5, c = 100 N s/m, gravity tilted), under the default
 tangential spring and under the paper's viscous law.
 
     /usr/bin/python3 scripts/validation/validate_slope.py [--output out/slope] [--only drift slide damping timestep]
@@ -31,7 +31,7 @@ import numpy as np  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.export import write_csv  # noqa: E402
-from roundedmesh.study import scenes  # noqa: E402
+from roundedmesh_study import scenes  # noqa: E402
 from yade import O  # noqa: E402
 from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 

@@ -23,9 +23,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
-from roundedmesh.study.analytic import hertz_force, nrmse  # noqa: E402
-from roundedmesh.study.scenes import S2_MATERIAL as MATERIAL, S2_OVERLAPS as OVERLAPS, s2_poses  # noqa: E402
-from roundedmesh.study.scenes import static_indentation  # noqa: E402
+from roundedmesh_study.analytic import hertz_force, nrmse  # noqa: E402
+from roundedmesh_study.scenes import S2_MATERIAL as MATERIAL, S2_OVERLAPS as OVERLAPS, s2_poses  # noqa: E402
+from roundedmesh_study.scenes import static_indentation  # noqa: E402
 
 NODES = {42: 1, 162: 2, 642: 3, 2562: 4}
 DISTORTIONS = (0.3, 0.5, 0.7)

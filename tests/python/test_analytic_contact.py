@@ -1,4 +1,4 @@
-"""Analytic references for non-spherical contact (roundedmesh.study.analytic), each checked against a result obtained
+"""Analytic references for non-spherical contact (roundedmesh_study.analytic), each checked against a result obtained
 another way: the sphere (Eq. 6), Hertz's eccentricity equation in Legendre's elliptic integrals (the module uses
 Carlson's), the Boussinesq surface displacement of the ellipsoidal pressure integrated numerically, plane-strain
 Hertz for Eq. 27 and finite-difference curvature of the spheroid's surface."""
@@ -10,7 +10,7 @@ import pytest
 from scipy.integrate import quad
 from scipy.special import ellipe, ellipk
 
-from roundedmesh.study import analytic
+from roundedmesh_study import analytic
 
 MODULUS = 2.5e6  # E* [Pa]
 OVERLAP = 1e-4  # [m]

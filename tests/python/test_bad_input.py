@@ -258,7 +258,7 @@ def test_an_engine_error_is_reported_without_tracebacks(tmp_path):
     script.write_text(textwrap.dedent("""
         import roundedmesh as rm
         from yade import O
-        from roundedmesh.study.scenes import build_bouncing_sphere
+        from roundedmesh_study.scenes import build_bouncing_sphere
         build_bouncing_sphere(1)
         O.dt = 1.5 * rm.critical_timestep()
         for run in (lambda: O.run(5, True), O.step):

@@ -8,7 +8,7 @@ from yade import ForceResetter, NewtonIntegrator, O, utils
 from yade.minieigenHP import Quaternion, Vector3
 
 import roundedmesh as rm
-from roundedmesh.study import scenes
+from roundedmesh_study import scenes
 
 RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000)
 

@@ -1,11 +1,11 @@
-"""Body-body contact against Hertz (roundedmesh.study.validation): two meshed spheres and a meshed sphere against an
+"""Body-body contact against Hertz (roundedmesh_study.validation): two meshed spheres and a meshed sphere against an
 analytic sphere (S2 pair, R* = R/2), spheroid pairs and cylinders (S5, paper Section 3.2). E* = 0.5 Pa (both
 bodies E = 1 Pa, nu = 0), curvature prescribed. The S5 tables are printed (pytest -s); the full figures come
 from scripts/validation/validate_body_contact.py."""
 import numpy as np
 import pytest
 
-from roundedmesh.study import validation as v
+from roundedmesh_study import validation as v
 
 POSES = 6  # the icosphere frames (vertex on vertex, the worst pose measured) and 5 random pairs, seed 1
 

@@ -4,8 +4,8 @@ damping, moved by YADE's NewtonIntegrator, against a perfect sphere under the sa
 import numpy as np
 import pytest
 
-from roundedmesh.study.analytic import apex_heights, bouncing_sphere
-from roundedmesh.study.scenes import S3, build_bouncing_sphere, trace_height
+from roundedmesh_study.analytic import apex_heights, bouncing_sphere
+from roundedmesh_study.scenes import S3, build_bouncing_sphere, trace_height
 
 DURATION = 0.17  # past the first rebound's apex (reached at about 0.167 s)
 

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 import roundedmesh as rm
-from roundedmesh.study.analytic import hertz_force, nrmse
-from roundedmesh.study.scenes import S2_MATERIAL, S2_OVERLAPS, s2_poses, static_indentation
+from roundedmesh_study.analytic import hertz_force, nrmse
+from roundedmesh_study.scenes import S2_MATERIAL, S2_OVERLAPS, s2_poses, static_indentation
 
 
 # The requirement, through the Python API: every triangle within 1 % of the sphere's radius.

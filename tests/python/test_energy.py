@@ -17,7 +17,7 @@ from yade import ForceResetter, NewtonIntegrator, O, PyRunner, utils
 from yade.minieigenHP import Quaternion
 
 import roundedmesh as rm
-from roundedmesh.study import analytic
+from roundedmesh_study import analytic
 
 R = 0.025
 FRACTION = 0.01  # of rm.critical_timestep()

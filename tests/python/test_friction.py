@@ -14,7 +14,7 @@ from yade import ForceResetter, NewtonIntegrator, O, utils
 from yade.minieigenHP import Quaternion, Vector3
 
 import roundedmesh as rm
-from roundedmesh.study import scenes
+from roundedmesh_study import scenes
 
 G = 9.81
 

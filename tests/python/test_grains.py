@@ -1,4 +1,4 @@
-"""The speed-against-error study's shapes not made of spheres (roundedmesh.study.grains): each of the volume of a
+"""The speed-against-error study's shapes not made of spheres (roundedmesh_study.grains): each of the volume of a
 25 mm sphere, its f zero on its mesh's nodes and 1-Lipschitz (what the study's second-contact check needs), its frames
 consistent, and YADE's peers built from it standing inside it."""
 import math
@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 import roundedmesh as rm
-from roundedmesh.study import grains, peers, shape_error as se
-from roundedmesh.study.validation import pair_poses
+from roundedmesh_study import grains, peers, shape_error as se
+from roundedmesh_study.validation import pair_poses
 
 
 @pytest.mark.parametrize("name", ["spheroid", "pill"])

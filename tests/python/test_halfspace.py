@@ -1,4 +1,4 @@
-"""The half-space contact solution (roundedmesh.study.halfspace), the speed-against-error study's reference where the
+"""The half-space contact solution (roundedmesh_study.halfspace), the speed-against-error study's reference where the
 curvature changes over the contact: Love's influence coefficient against its closed forms, the solver against
 Hertz's circular and elliptical solutions (analytic.py, written independently), and its complementarity
 conditions; the study's gap of a pressed sphere against the sphere's sagitta."""
@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from roundedmesh.study import halfspace, shape_error as se
-from roundedmesh.study.analytic import elliptical_hertz_force, hertz_force, nrmse
+from roundedmesh_study import halfspace, shape_error as se
+from roundedmesh_study.analytic import elliptical_hertz_force, hertz_force, nrmse
 
 MODULUS = 1e6 / (1 - 0.4 ** 2)   # E* of S1's particle on a rigid plane [Pa]
 DEEPEST = 5e-4                    # the study's deepest overlap [m]

@@ -1,6 +1,8 @@
 """`import roundedmesh` works in `yade script.py`, in the interactive yade shell, and in Debian's
 /usr/bin/python3 after `import yade`, with no sys.path or environment set by the user (the set-up
 command installs the .pth files that make it so)."""
+import ast
+import importlib
 import os
 import subprocess
 
@@ -17,99 +19,92 @@ def clean_environment():
 def test_in_a_yade_script(tmp_path, clean_environment):
     script = tmp_path / "script.py"
     script.write_text(CHECK + "\n")
-    out = subprocess.run(["yade", "-n", "-x", str(script)], capture_output=True, text=True, timeout=120,
+    out = subprocess.run(["yade", "-n", "-x", str(script)], capture_output=True, text=True,
                          env=clean_environment)
     assert "RM_OK (42, 3)" in out.stdout, out.stdout + out.stderr
 
 
 def test_in_the_interactive_yade_shell(clean_environment):
-    out = subprocess.run(["yade", "-n"], input=CHECK + "\nexit()\n", capture_output=True, text=True, timeout=120,
+    out = subprocess.run(["yade", "-n"], input=CHECK + "\nexit()\n", capture_output=True, text=True,
                          env=clean_environment)
     assert "RM_OK (42, 3)" in out.stdout, out.stdout + out.stderr
 
 
 def test_in_debian_python_after_import_yade(clean_environment):
     out = subprocess.run(["/usr/bin/python3", "-c", "import yade; " + CHECK], capture_output=True, text=True,
-                         timeout=120, env=clean_environment)
+                         env=clean_environment)
     assert "RM_OK (42, 3)" in out.stdout, out.stdout + out.stderr
 
 
-# `import roundedmesh as rm` is enough for every user module (rm.export.VtkSeries, rm.scene, ...) and imports none of
-# roundedmesh.study, the validation and study code (issue 22: a lighter import). Checked in a new process, since this
-# one has imported them all already, against the package's own files so that a new module is covered too.
+# `import roundedmesh as rm` is enough for every user module (rm.export.VtkSeries, rm.scene, ...) and imports nothing
+# of roundedmesh_study, the validation and study code, which uses roundedmesh (issue 36: the package without its
+# research). Checked in a new process, since this one has imported them all already, against the package's own files
+# so that a new module is covered too.
 def test_user_modules_come_with_the_package_and_the_study_does_not():
     import roundedmesh
-    from roundedmesh._deprecated import MOVED
     folder = os.path.dirname(roundedmesh.__file__)
-    names = sorted(f[:-3] for f in os.listdir(folder) if f.endswith(".py") and not f.startswith("_"))
-    user = [n for n in names if n not in MOVED]
-    assert {"scene", "contact", "export", "progress", "checkpoint", "meshfiles", "shapes"} <= set(user)
-    assert set(names) - set(user) == set(MOVED)  # every moved module has its deprecated alias
-    study = sorted(f[:-3] for f in os.listdir(os.path.join(folder, "study")) if f.endswith(".py") and f[0] != "_")
-    assert set(MOVED) <= set(study)   # every module that moved there; the study's own new ones (grains, ...) beside
-    from roundedmesh.study import MODULES
-    assert study == sorted(MODULES)   # each reachable as rm.study.<name>
+    user = sorted(f[:-3] for f in os.listdir(folder) if f.endswith(".py") and not f.startswith("_"))
+    assert {"scene", "contact", "export", "progress", "checkpoint", "meshfiles", "shapes", "model_choice"} <= set(user)
     script = (f"import sys; import roundedmesh as rm; print('MISSING', [n for n in {user!r} if not hasattr(rm, n)]); "
-              "print('STUDY', sorted(m for m in sys.modules if m.startswith('roundedmesh.study') or "
-              f"m in {['roundedmesh.' + n for n in MOVED]!r}))")
-    out = subprocess.run(["/usr/bin/python3", "-c", script], capture_output=True, text=True, timeout=120,
-                         env=os.environ)
+              "print('STUDY', sorted(m for m in sys.modules if m.startswith('roundedmesh_study')))")
+    out = subprocess.run(["/usr/bin/python3", "-c", script], capture_output=True, text=True, env=os.environ)
     assert "MISSING []" in out.stdout and "STUDY []" in out.stdout, out.stdout + out.stderr
 
 
-# Each way a user script may name a module that moved to roundedmesh.study still gives that module, with one
-# DeprecationWarning naming the new place and pointing at the user's line. In a new process per way, so that
-# an earlier import (which binds the name in the package) does not hide the warning.
-OLD_NAME_FORMS = {
-    "attribute": "import roundedmesh as rm\nmodule = rm.{name}\n",
-    "from-import": "from roundedmesh import {name} as module\n",
-    "import": "import roundedmesh.{name}\nmodule = roundedmesh.{name}\n",
-}
-OLD_NAME_CHECK = """import json, sys, warnings
-import roundedmesh
-from roundedmesh._deprecated import MOVED
-result = {{}}
-for name in MOVED:
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        namespace = {{}}
-        exec(compile({form!r}.format(name=name), __file__, "exec"), namespace)
-    result[name] = {{"module": namespace["module"].__name__,
-                    "warnings": [[w.category.__name__, str(w.message), w.filename] for w in caught]}}
-print("RESULT", json.dumps(result))
-"""
+def package_imports(package):
+    """{module: the modules of `package` it imports}, read from the source of the package's own files (every import
+    statement, at module level or inside a function: a cycle through a function's import is still a cycle)."""
+    folder = os.path.dirname(importlib.import_module(package).__file__)
+    modules = {f[:-3] for f in os.listdir(folder) if f.endswith(".py")}
+
+    def named(node):   # the dotted names an import statement reaches, relative to the package ('' for the package)
+        if isinstance(node, ast.Import):
+            return [a.name[len(package) + 1:] for a in node.names if a.name.startswith(package + ".")]
+        base = node.module or ""
+        if node.level == 0:
+            if base != package and not base.startswith(package + "."):
+                return []
+            base = base[len(package) + 1:]
+        return [base] if base else [a.name for a in node.names]
+    graph = {}
+    for name in modules:
+        with open(os.path.join(folder, name + ".py")) as f:
+            tree = ast.parse(f.read())
+        reached = {dotted.split(".")[0] for node in ast.walk(tree) if isinstance(node, (ast.Import, ast.ImportFrom))
+                   for dotted in named(node)}
+        graph[name] = (reached & modules) - {name, "__init__"}
+    return graph
 
 
-@pytest.mark.parametrize("form", sorted(OLD_NAME_FORMS))
-def test_old_names_of_the_study_modules_work_and_warn(form, tmp_path):
-    import json
-    from roundedmesh._deprecated import MOVED
-    script = tmp_path / "user_script.py"
-    script.write_text(OLD_NAME_CHECK.format(form=OLD_NAME_FORMS[form]))
-    out = subprocess.run(["/usr/bin/python3", str(script)], capture_output=True, text=True, timeout=120,
-                         env=os.environ)
-    lines = [line for line in out.stdout.splitlines() if line.startswith("RESULT ")]
-    assert out.returncode == 0 and lines, out.stdout + out.stderr
-    result = json.loads(lines[0][len("RESULT "):])
-    assert sorted(result) == sorted(MOVED)
-    for name, found in result.items():
-        assert found["module"] == f"roundedmesh.study.{name}", (form, name, found)
-        assert found["warnings"] == [["DeprecationWarning", f"roundedmesh.{name} has moved to roundedmesh.study.{name}; "
-                                      f"use `from roundedmesh.study import {name}`", str(script)]], (form, name, found)
+def cycles(graph):
+    """Every import cycle of `graph` ({module: imported modules}), each as the list of its modules."""
+    found, state = [], {}
+
+    def visit(module, path):
+        state[module] = "open"
+        for other in sorted(graph[module]):
+            if state.get(other) == "open":
+                found.append(path[path.index(other):] + [other])
+            elif other not in state:
+                visit(other, path + [other])
+        state[module] = "done"
+    for module in sorted(graph):
+        if module not in state:
+            visit(module, [module])
+    return found
 
 
-def test_the_new_places_and_cheapest_model_do_not_warn():
-    import importlib
-    import warnings
+def test_no_import_cycle_in_the_package():
+    graph = package_imports("roundedmesh")
+    assert graph["bodies"] >= {"model_choice"}     # the graph is read: add_body(error=) chooses with model_choice
+    assert cycles(graph) == []
+    assert cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}}) == [["a", "b", "c", "a"]]   # and a cycle would be found
 
+
+def test_the_study_uses_the_package_and_cheapest_model_needs_no_study():
     import roundedmesh as rm
-    from roundedmesh._deprecated import MOVED
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        for name in MOVED:
-            module = importlib.import_module(f"roundedmesh.study.{name}")
-            assert getattr(rm.study, name) is module
-        choice = rm.cheapest_model("gummy_bear", 0.05)
-    assert [str(w.message) for w in caught if "roundedmesh" in str(w.message)] == []
-    assert choice == rm.study.model_choice.cheapest_model("gummy_bear", 0.05)
+    import roundedmesh_study
+    from roundedmesh_study import peers
+    assert roundedmesh_study.__file__ != rm.__file__ and peers.scene is rm.scene
     assert "cheapest_model" in rm.__all__ and callable(rm.cheapest_model)
+    assert rm.cheapest_model("gummy_bear", 0.05) == rm.model_choice.cheapest_model("gummy_bear", 0.05)

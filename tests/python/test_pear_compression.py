@@ -5,9 +5,9 @@ import os
 
 import numpy as np
 
-from roundedmesh.study import hertz_reference as hr
-from roundedmesh.study.analytic import effective_modulus, nrmse
-from roundedmesh.study.shape_error import rounded_mesh
+from roundedmesh_study import hertz_reference as hr
+from roundedmesh_study.analytic import effective_modulus, nrmse
+from roundedmesh_study.shape_error import rounded_mesh
 
 SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir, "scripts", "validation",
                       "validate_pear_compression.py")

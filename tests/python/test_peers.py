@@ -1,4 +1,4 @@
-"""YADE's representations of the gummy bear for the S1 speed comparison (roundedmesh.study.peers): the clump's spheres
+"""YADE's representations of the gummy bear for the S1 speed comparison (roundedmesh_study.peers): the clump's spheres
 against the mesh they stand for, the level set's distance field, the damping mapping, and a few steps of each
 builder on four hand-made poses."""
 import math
@@ -8,7 +8,7 @@ import pytest
 from yade import O
 
 import roundedmesh as rm
-from roundedmesh.study import peers
+from roundedmesh_study import peers
 
 MESH = rm.Mesh.reference_shape("gummy_bear")
 DENSITY = peers.PARTICLE["density"]

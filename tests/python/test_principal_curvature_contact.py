@@ -1,6 +1,6 @@
 """Principal curvatures and Hertz's contact ellipse (issue 13): Mesh.principal_curvatures / principal_directions
 and the contact option curvature='principal' (engine, body_contact, sphere_contact, plane_contact), against
-exact elliptical Hertz on the S5 scenes of roundedmesh.study.validation (E* = 0.5 Pa, curvature prescribed unless
+exact elliptical Hertz on the S5 scenes of roundedmesh_study.validation (E* = 0.5 Pa, curvature prescribed unless
 said). NRMSE is over the whole S5 sweep (overlap to 7.5 % of a, resp. of R), worst of the 3 axis poses
 (validation.axis_poses, seed 1). The full tables come from scripts/validation/validate_body_contact.py."""
 import math
@@ -12,9 +12,9 @@ from yade import ForceResetter, NewtonIntegrator, O, utils
 from yade.minieigenHP import Quaternion, Vector3
 
 import roundedmesh as rm
-from roundedmesh.study import hertz_reference as hr
-from roundedmesh.study import validation as v
-from roundedmesh.study.analytic import elliptical_hertz_force, nrmse, spheroid_pair_radii
+from roundedmesh_study import hertz_reference as hr
+from roundedmesh_study import validation as v
+from roundedmesh_study.analytic import elliptical_hertz_force, nrmse, spheroid_pair_radii
 
 PRINCIPAL = {"curvature": "principal"}
 
@@ -266,7 +266,7 @@ def test_two_crossed_spheroids_settle_on_a_wall():
 # 1e-4 leave room for the blend's polynomial smooth minimum, whose second derivatives jump at the edges of its
 # 2.7 mm band, where either step can straddle an edge.
 def test_exact_reference_shape_curvatures_are_the_implicit_functions():
-    from roundedmesh.study import hertz_reference as hr, peers
+    from roundedmesh_study import hertz_reference as hr, peers
     mesh = rm.Mesh.reference_shape("gummy_bear", curvature="exact")
     assert mesh.curvature_mode == "prescribed"
     np.testing.assert_allclose(mesh.curvatures, mesh.principal_curvatures.mean(axis=1), rtol=1e-12, atol=1e-12)

@@ -121,7 +121,7 @@ def test_perfect_spheres_rest_on_the_floor_through_roundedmesh(tmp_path):
 
 # One step of 4 gummy bears, as rounded bodies and as YADE's 40-sphere clumps: every representation starts from
 # S1's lattice with the same jitter and orientations. A clump's centre is its spheres' union's, within 0.3 mm of
-# the bear's (roundedmesh.study.peers); one step of free fall moves both alike (g dt^2 = 1e-7 m).
+# the bear's (roundedmesh_study.peers); one step of free fall moves both alike (g dt^2 = 1e-7 m).
 @pytest.mark.slow
 def test_yade_peers_start_where_the_rounded_bodies_start(tmp_path):
     out = run("--shape", "gummy_bear", "--peers", "clumps", "--count", "4", "--duration", "1e-4", "--frames", "1",

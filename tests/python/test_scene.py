@@ -12,7 +12,7 @@ from yade.minieigenHP import Quaternion, Vector3
 import roundedmesh as rm
 from roundedmesh import scene as rm_scene
 from roundedmesh.export import write_vtp
-from roundedmesh.study.scenes import S3, build_bouncing_sphere
+from roundedmesh_study.scenes import S3, build_bouncing_sphere
 
 RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=1e-3)
 STIFF = rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=1e-3)

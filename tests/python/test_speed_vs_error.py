@@ -1,6 +1,6 @@
 """The error axis of the speed-against-error study (issue 14, doc/speed-vs-error.md): Hertz's reference at a smooth
-shape's contact point (roundedmesh.study.hertz_reference), the pressing of YADE's representations
-(roundedmesh.study.shape_error), and scripts/studies/speed_vs_error.py --quick --costs --report end to end; the S1
+shape's contact point (roundedmesh_study.hertz_reference), the pressing of YADE's representations
+(roundedmesh_study.shape_error), and scripts/studies/speed_vs_error.py --quick --costs --report end to end; the S1
 packing of a study grain and its costs (bench_shaken_bears.py and record_s1_scene.py with --shape,
 speed_vs_error_costs.py --shapes)."""
 import csv
@@ -13,10 +13,10 @@ import numpy as np
 import pytest
 
 from roundedmesh import shapes
-from roundedmesh.study import analytic, peers
-from roundedmesh.study import hertz_reference as hr
-from roundedmesh.study import shape_error as se
-from roundedmesh.study.validation import pair_poses
+from roundedmesh_study import analytic, peers
+from roundedmesh_study import hertz_reference as hr
+from roundedmesh_study import shape_error as se
+from roundedmesh_study.validation import pair_poses
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir)
 SCRIPT = os.path.join(ROOT, "scripts", "studies", "speed_vs_error.py")

@@ -1,4 +1,4 @@
-"""Peers built from any closed triangle mesh (roundedmesh.study.mesh_distance, sphere_fill, peers.level_set_from_mesh):
+"""Peers built from any closed triangle mesh (roundedmesh_study.mesh_distance, sphere_fill, peers.level_set_from_mesh):
 the mesh's signed distance against exact distances (a cube, an icosphere within its sagitta), the inscribed-sphere
 clump of a spheroid, and a level set of an icosphere against the mesh's volume."""
 import numpy as np
@@ -6,9 +6,9 @@ import pytest
 from scipy.spatial.distance import cdist
 
 import roundedmesh as rm
-from roundedmesh.study import peers
-from roundedmesh.study.mesh_distance import signed_distance
-from roundedmesh.study.sphere_fill import inscribed_spheres
+from roundedmesh_study import peers
+from roundedmesh_study.mesh_distance import signed_distance
+from roundedmesh_study.sphere_fill import inscribed_spheres
 
 HALF = 0.01  # the cube's half side [m]
 CUBE_VERTICES = HALF * np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=float)

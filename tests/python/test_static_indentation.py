@@ -5,8 +5,8 @@ import pytest
 from yade.minieigenHP import Quaternion
 
 import roundedmesh as rm
-from roundedmesh.study.analytic import hertz_force, nrmse
-from roundedmesh.study.scenes import (RIGID, S2_MATERIAL as MATERIAL, S2_OVERLAPS as OVERLAPS, s2_poses,
+from roundedmesh_study.analytic import hertz_force, nrmse
+from roundedmesh_study.scenes import (RIGID, S2_MATERIAL as MATERIAL, S2_OVERLAPS as OVERLAPS, s2_poses,
                                      static_indentation)
 
 def nrmse_per_pose(subdivisions, **engine_options):

@@ -40,10 +40,12 @@ from dataclasses import dataclass, field
 import numpy as np
 from yade.minieigenHP import Quaternion, Vector3
 
-from .._core import DEEPEST_OVERLAP, HertzMaterial, Mesh
+from roundedmesh import HertzMaterial, Mesh
+from roundedmesh._core import DEEPEST_OVERLAP
+from roundedmesh.contact import body_contact, sphere_contact
+
 from .analytic import (approximate_elliptical_hertz_force, elliptical_hertz_force, hertz_force, nrmse,
                        parallel_cylinders_force, spheroid_equator_radii)
-from ..contact import body_contact, sphere_contact
 from .hertz_reference import relative_principal_radii
 
 # --- pressing two bodies together -----------------------------------------------------------------------

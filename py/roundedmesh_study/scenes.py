@@ -18,10 +18,9 @@ import numpy as np
 from yade import ForceResetter, NewtonIntegrator, O, PyRunner, utils
 from yade.minieigenHP import Quaternion, Vector3
 
-from .. import progress
-from .._core import HertzMaterial, Mesh, plane_contact
-from ..scene import add_body, assign_material, critical_timestep, engine, statistics
-from ..shapes import reference_shape
+from roundedmesh import HertzMaterial, Mesh, plane_contact, progress
+from roundedmesh.scene import add_body, assign_material, critical_timestep, engine, statistics
+from roundedmesh.shapes import reference_shape
 
 RIGID = HertzMaterial(young=math.inf, poisson=0.0, density=1.0)
 

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._core import Mesh
+from roundedmesh import Mesh
 
 RADIUS = 0.025                      # volume-equivalent radius of every study shape [m]
 REFERENCE_NODES = 600               # the node count of a grain's body frame and of its S1 packing

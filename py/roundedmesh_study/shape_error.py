@@ -39,13 +39,13 @@ from yade import (Bo1_LevelSet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, Ig2_LevelSe
                   Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin)
 from yade.minieigenHP import Quaternion, Vector3
 
+from roundedmesh import HertzMaterial, Mesh, plane_contact, shapes
+from roundedmesh.contact import body_contact
+
 from . import grains, halfspace
 from . import hertz_reference as hr
 from . import peers
-from .. import shapes
-from .._core import HertzMaterial, Mesh, plane_contact
 from .analytic import effective_modulus, nrmse
-from ..contact import body_contact
 
 RADIUS = 0.025                    # volume-equivalent radius r of every shape [m] (shapes.json)
 MAX_OVERLAP = 0.02 * RADIUS       # deepest overlap, 2 % of r [m]

@@ -57,8 +57,8 @@ from yade import (Bo1_LevelSet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, Ig2_LevelSe
                   Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin, LevelSet, RegularGrid)
 from yade.minieigenHP import Matrix3, Quaternion, Vector3, Vector3i
 
-from .. import scene, shapes
-from .._core import HertzMaterial
+from roundedmesh import HertzMaterial, scene, shapes
+
 from . import grains
 from .mesh_distance import signed_distance
 from .sphere_fill import inscribed_spheres

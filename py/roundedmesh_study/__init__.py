@@ -1,9 +1,7 @@
-"""roundedmesh.study: the code of the validation and the studies, not needed to build or run a scene. It is not
-imported by `import roundedmesh`; import what is needed:
+"""roundedmesh_study: the code of the validation and the studies, not needed to build or run a scene. It uses the
+package roundedmesh, which never imports it; import what is needed:
 
-    from roundedmesh.study import validation, analytic
-
-or use it as an attribute, which imports the module on first use: `import roundedmesh as rm; rm.study.scenes.S3`.
+    from roundedmesh_study import validation, analytic
 
     analytic          analytic references written independently of the compiled code: Hertz (spherical and
                       elliptical), the bouncing sphere, NRMSE (doc/validation.md)
@@ -15,8 +13,8 @@ or use it as an attribute, which imports the module on first use: `import rounde
                       half-space solution (doc/speed-vs-error.md)
     halfspace         the elastic half-space contact of any gap, the reference where Hertz does not hold
     grains            the study's shapes not made of spheres: a spheroid, a pill, a rounded tetrahedral grain
-    model_choice      the cheapest model that meets a force error, for a study shape or any mesh; rm.cheapest_model
-                      is its user entry point
+    model_table       the study's data (speed_vs_error.json) and the table rm.cheapest_model reads, made from it
+    model_check       rm.cheapest_model's choice for a study shape's fine mesh, measured as the study measures
     peers             YADE's own representations of the reference shapes (clumps, level sets, spheres) for S1
                       (doc/s1-packing.md)
     sphere_fill       a clump for any mesh: the greedy inscribed-sphere fill
@@ -25,18 +23,3 @@ or use it as an attribute, which imports the module on first use: `import rounde
 
 The scripts that use them are in scripts/validation, scripts/studies and scripts/benchmarks (scripts/README.md).
 """
-import importlib
-
-MODULES = ("analytic", "benchmarking", "grains", "halfspace", "hertz_reference", "mesh_distance", "model_choice",
-           "peers", "scenes", "shape_error", "sphere_fill", "validation")
-
-
-def __getattr__(name):
-    """rm.study.<module> imports the module on first use (PEP 562)."""
-    if name in MODULES:
-        return importlib.import_module(f"{__name__}.{name}")
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted(set(globals()) | set(MODULES))
