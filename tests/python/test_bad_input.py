@@ -269,7 +269,7 @@ def test_an_engine_error_is_reported_without_tracebacks(tmp_path):
         print("ITERATION", O.iter)
         O.run(5, True)
     """))
-    out = subprocess.run(["/usr/bin/python3", str(script)], capture_output=True, text=True, timeout=120,
+    out = subprocess.run(["/usr/bin/python3", str(script)], capture_output=True, text=True,
                          env=os.environ)
     assert out.returncode == 1
     assert "CAUGHT 2\nCAUGHT 2\nITERATION 0\n" in out.stdout, out.stdout + out.stderr

@@ -27,7 +27,7 @@ def child(path, mode, kill_at=None):
 
 
 def finished(process):
-    out, err = process.communicate(timeout=600)
+    out, err = process.communicate()
     assert process.returncode == 0, err
     return json.loads(out.strip().splitlines()[-1])
 
@@ -43,7 +43,7 @@ def uninterrupted(tmp_path_factory):
 def test_a_run_killed_within_a_save_resumes_bit_for_bit(tmp_path, uninterrupted, kill_at):
     path = tmp_path / "run.yade.gz"
     killed = child(path, "fresh", kill_at)
-    killed.communicate(timeout=600)
+    killed.communicate()
     assert killed.returncode == -signal.SIGKILL
     assert rm.checkpoint.verify(str(path))["iteration"] in (EVERY, 2 * EVERY)
     assert finished(child(path, "resume")) == uninterrupted
@@ -56,13 +56,12 @@ def test_a_run_killed_within_a_save_resumes_bit_for_bit(tmp_path, uninterrupted,
 def test_a_run_killed_at_a_random_moment_resumes_bit_for_bit(tmp_path, uninterrupted, seed):
     path = tmp_path / "run.yade.gz"
     running = child(path, "fresh")
-    deadline = time.monotonic() + 300
     while not os.path.exists(rm.checkpoint.sidecar_path(str(path))):
-        assert running.poll() is None and time.monotonic() < deadline
+        assert running.poll() is None
         time.sleep(0.01)
     time.sleep(random.Random(seed).uniform(0, 1.5))
     running.send_signal(signal.SIGKILL)
-    running.communicate(timeout=60)
+    running.communicate()
     resumed = finished(child(path, "resume"))
     assert resumed == uninterrupted
 

@@ -28,7 +28,7 @@ def test_the_guide_shows_the_scene_of_the_script():
 # the rounded bodies and the spheres as parts 0 and 1 of each frame.
 def test_the_script_runs(tmp_path):
     out = subprocess.run(["/usr/bin/python3", SCRIPT, "--steps", "200", "--vtk", str(tmp_path)], capture_output=True,
-                         text=True, timeout=300, env=os.environ)
+                         text=True, env=os.environ)
     assert out.returncode == 0, out.stdout + out.stderr
     assert "after 200 steps" in out.stdout and "Traceback" not in out.stderr, out.stdout + out.stderr
     datasets = ElementTree.parse(tmp_path / "mixed.pvd").getroot().findall("Collection/DataSet")

@@ -251,7 +251,7 @@ def test_a_stopped_script_reports_without_tracebacks_through_roundedmesh(tmp_pat
         O.dt = 0.2 * rm.critical_timestep()
         O.run(100, True)
     """))
-    out = subprocess.run(["/usr/bin/python3", str(script)], capture_output=True, text=True, timeout=120,
+    out = subprocess.run(["/usr/bin/python3", str(script)], capture_output=True, text=True,
                          env=os.environ)
     assert out.returncode == 1
     assert out.stderr.count("FATAL ERROR") == 1, out.stderr

@@ -382,7 +382,7 @@ def test_the_study_script_hands_its_folder_to_the_report(tmp_path):
     write_errors(tmp_path / "errors.csv", {"sphere"})
     script = os.path.join(ROOT, "scripts", "studies", "speed_vs_error.py")
     out = subprocess.run(["/usr/bin/python3", script, "--shapes", "sphere", "--families", "level_sets", "--report",
-                          "--output", str(tmp_path)], capture_output=True, text=True, timeout=120, env=os.environ)
+                          "--output", str(tmp_path)], capture_output=True, text=True, env=os.environ)
     assert out.returncode == 0, out.stdout + out.stderr
     assert "no costs file" in out.stderr
     assert "Which model does my scene need" in (tmp_path / "guide.md").read_text()

@@ -20,7 +20,7 @@ VOLUME = 4 / 3 * math.pi * 0.025 ** 3  # every body's [m^3]
 
 
 def run(*arguments):
-    return subprocess.run(["/usr/bin/python3", SCRIPT, *arguments], capture_output=True, text=True, timeout=120,
+    return subprocess.run(["/usr/bin/python3", SCRIPT, *arguments], capture_output=True, text=True,
                           env=os.environ)
 
 
