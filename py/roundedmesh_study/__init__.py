@@ -21,5 +21,11 @@ package roundedmesh, which never imports it; import what is needed:
     mesh_distance     the exact signed distance to a closed triangle mesh (level sets and fills of any mesh)
     benchmarking      the machine's description and step timings for the benchmark scripts (doc/benchmarks.md)
 
-The scripts that use them are in scripts/validation, scripts/studies and scripts/benchmarks (scripts/README.md).
+The scripts that use them are in scripts/validation, scripts/studies and scripts/benchmarks (scripts/README.md);
+each parses its options and calls a module here. A study that runs a scene whole runs its script as a command
+(SCRIPTS).
 """
+import os
+
+# The repository's scripts/ folder, from this package's source (build/python links to it).
+SCRIPTS = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__)))), "scripts")

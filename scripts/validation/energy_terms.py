@@ -44,23 +44,16 @@ side by side, 204 s each, on a busy 2-core AMD EPYC). Result (doc/validation.md,
 as much work as today's law, so the work is the share term, not the lever arm.
 """
 import argparse
-import importlib.util
 import os
 import shlex
 import sys
 import time
 
 import numpy as np
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-_spec = importlib.util.spec_from_file_location("energy_conservation", os.path.join(HERE, "energy_conservation.py"))
-energy = importlib.util.module_from_spec(_spec)
-sys.modules[_spec.name] = energy
-_spec.loader.exec_module(energy)
-
-import roundedmesh as rm  # noqa: E402
-from roundedmesh_study.benchmarking import machine  # noqa: E402
-from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
+import roundedmesh as rm
+from roundedmesh_study import energy_conservation as energy
+from roundedmesh_study.benchmarking import machine
+from yade.minieigenHP import Quaternion, Vector3
 
 CASES = ("sphere-sphere", "bear-bear", "bear-pear", "bear-wall")
 WALL_RADIUS = 1e3 * energy.R_EQ     # the analytic sphere standing for the wall [m]

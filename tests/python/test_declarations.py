@@ -3,9 +3,11 @@ the material's fields and its record by name, the engine's options and their def
 scene for rm.critical_timestep, and scenes saved with the older positional material records."""
 import json
 import math
+import pickle
 
 import pytest
 from yade import ForceResetter, NewtonIntegrator, O, utils
+from yade.minieigenHP import Quaternion
 
 import roundedmesh as rm
 from roundedmesh import _core
@@ -26,15 +28,48 @@ def test_a_material_record_names_every_field_and_restores_it():
 
 def test_the_engine_options_and_their_defaults_come_from_core():
     assert _core.ENGINE_OPTIONS == {"gamma": 10.0, "regime": "auto", "friction": "spring",
-                                    "stop_overlap": _core.STOP_OVERLAP, "curvature": "mean", "normal": "pressure"}
+                                    "stop_overlap": _core.STOP_OVERLAP, "curvature": "mean", "normal": "pressure",
+                                    "threads": 0}
     assert _core.ENGINE_CHOICES == {"regime": ("auto", "quadrature", "direct", "exact"),
                                     "friction": ("spring", "viscous"), "curvature": ("mean", "principal"),
                                     "normal": ("pressure", "energy")}
+    assert rm.EngineOptions().record() == _core.ENGINE_OPTIONS
+    assert rm.EngineOptions.fields == tuple(_core.ENGINE_OPTIONS)
+    # The engine's command names its options' record in the scene, and carries none of them.
     command = rm.engine().command
-    for name, value in _core.ENGINE_OPTIONS.items():
-        assert f"{name}={value!r}" in command
+    key = command[command.rindex("(") + 2:-2]
+    assert command == f"__import__('roundedmesh').scene.step({key!r})"
+    assert json.loads(O.tags[f"roundedmesh.options.{key}"]) == _core.ENGINE_OPTIONS
+    for name in _core.ENGINE_OPTIONS:
+        assert name not in command
     with pytest.raises(ValueError, match="curvature must be 'mean' or 'principal', got 'gaussian'"):
         rm.engine(curvature="gaussian")
+
+
+def test_engine_options_are_one_struct_checked_by_field_and_between_fields():
+    exact = rm.EngineOptions(regime="exact", stop_overlap=math.inf)
+    assert exact.regime == "exact" and exact.stop_overlap == math.inf and exact.gamma == 10.0
+    assert rm.EngineOptions(**exact.record()) == exact and exact != rm.EngineOptions()
+    assert repr(exact).startswith("EngineOptions(gamma=10.0, regime='exact'")
+    assert pickle.loads(pickle.dumps(exact)) == exact
+    with pytest.raises(TypeError, match="unknown option.*gama"):
+        rm.EngineOptions(gama=3)
+    with pytest.raises(TypeError, match="keyword arguments only"):
+        rm.EngineOptions(10.0)
+    with pytest.raises(ValueError, match="threads must be a whole number"):
+        rm.EngineOptions(threads=1.5)
+    # The rule between fields: the energy law takes the contact circle.
+    with pytest.raises(ValueError, match="normal='energy' takes the contact circle of curvature='mean'"):
+        rm.EngineOptions(normal="energy", curvature="principal")
+    # The same options by name or as options=, for the engine and the contact functions; not both.
+    mesh = rm.Mesh.icosphere(0.01, 2)
+    pose = dict(mesh=mesh, pos=(0, 0, 0.0099), ori=Quaternion.Identity, plane_point=(0, 0, 0),
+                plane_normal=(0, 0, 1), mesh_material=FRICTIONAL, plane_material=FRICTIONAL)
+    assert rm.plane_contact(**pose, options=exact) == rm.plane_contact(**pose, regime="exact")
+    assert rm.plane_contact(**pose, options=exact) != rm.plane_contact(**pose)
+    with pytest.raises(TypeError, match="together"):
+        rm.plane_contact(**pose, options=exact, regime="direct")
+    assert rm.engine(options=exact).command == rm.engine(regime="exact", stop_overlap=math.inf).command
 
 
 def two_frictional_balls():

@@ -11,18 +11,12 @@ by the triangle-pair law's own doing (doc/physics.md, "Deep overlaps and fast im
 a contact law derived from a potential of the overlap (issue 12, group 1) makes it pass, or the requirement is
 restated for what these shapes allow."""
 import functools
-import importlib.util
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import roundedmesh as rm
-
-_spec = importlib.util.spec_from_file_location(
-    "deep_monotonicity", Path(__file__).resolve().parents[2] / "scripts" / "validation" / "deep_monotonicity.py")
-deep = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(deep)
+from roundedmesh_study import deep_monotonicity as deep
 
 ORIENTATIONS = 40
 SEED = 1

@@ -11,18 +11,9 @@ The meshed spheres, whose triangle forces all point through one centre, pass, an
 range. The issue's other targets for pears and gummy bears are xfail(strict): the measurements show them missed
 today; when the normal force is derived from a potential they pass, and must then become plain tests.
 """
-import importlib.util
-import os
-import sys
-
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-_spec = importlib.util.spec_from_file_location("energy_conservation",
-                                               os.path.join(ROOT, "scripts", "validation", "energy_conservation.py"))
-energy = importlib.util.module_from_spec(_spec)
-sys.modules[_spec.name] = energy   # the collision's PyRunner finds its recorder here
-_spec.loader.exec_module(energy)
+from roundedmesh_study import energy_conservation as energy
 
 ISSUE_12 = pytest.mark.xfail(strict=True, reason="issue 12 group 1: the pressure-integral normal force is not derived "
                                                  "from a potential; see doc/validation.md")

@@ -1,5 +1,6 @@
-"""scripts/hard_cases.py, scene S8 of doc/scenes.md: its short form, which CI runs (S1 of the gummy bears through the
-shaking, seed 1, two threads), and its coarse-mesh and report machinery on a small case.
+"""scripts/hard_cases.py, scene S8 of doc/scenes.md (roundedmesh_study.hard_cases): its short form, which CI runs (S1
+of the gummy bears through the shaking, seed 1, two threads), and its coarse-mesh and report machinery on a small
+case.
 
 The short form fails today: S1 of the gummy bears completes the shaking (it stopped at step 4494 on a false deep
 triangle pair until the deep-contact criterion followed the whole segment), but its deepest pair reaches 0.35 r_eq, a
@@ -7,12 +8,13 @@ foot 8.8 mm into another bear at step 5080 (vertices 8.6 mm inside), above the s
 pass through each other"). It is kept as an expected failure, strict: the day it passes, this test fails until the
 mark is removed."""
 import csv
-import importlib.util
 import math
 import os
 import subprocess
 
 import pytest
+
+from roundedmesh_study import hard_cases
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir)
 SCRIPT = os.path.join(ROOT, "scripts", "hard_cases.py")
@@ -38,9 +40,6 @@ def test_the_coarse_meshes_and_the_report(tmp_path):
     """The coarse meshes are what S8 says: the bar and the plate are given as 12 triangles and made as rm.Mesh makes
     them, within its tolerance of 0.05 r_eq, the coarsened bear has about 150 nodes; the report writes one row per
     check and its picture, and names the failures."""
-    spec = importlib.util.spec_from_file_location("hard_cases", SCRIPT)
-    hard_cases = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(hard_cases)
     meshes = hard_cases.coarse_meshes()
     sizes = {name: (len(m.vertices), len(m.triangles)) for name, m in meshes.items()}
     for size in ((0.02, 0.02, 0.05), (0.001, 0.02, 0.05)):
@@ -67,9 +66,6 @@ def test_the_reference_gummy_bear_passes_the_coarse_mesh_checks(tmp_path, monkey
     2 s)."""
     import argparse
     import roundedmesh as rm
-    spec = importlib.util.spec_from_file_location("hard_cases", SCRIPT)
-    hard_cases = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(hard_cases)
     monkeypatch.setattr(hard_cases, "coarse_meshes", lambda: {"bear": rm.Mesh.reference_shape("gummy_bear")})
     report = hard_cases.Report()
     hard_cases.coarse_checks(argparse.Namespace(), report)
