@@ -81,13 +81,13 @@ def worst_fall(forces):
     return worst
 
 
-def main():
+def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--orientations", type=int, default=200)
     parser.add_argument("--shape", default="gummy_bear", choices=["gummy_bear", "pear"])
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--output", default=os.path.join("out", "partner_monotonicity"))
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     os.makedirs(args.output, exist_ok=True)
     mesh = rm.Mesh.reference_shape(args.shape)
     vertices = np.array(mesh.vertices)
