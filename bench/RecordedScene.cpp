@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/PrincipalCurvature.hpp"
 #include "pkg/shape/TriangleSurface.hpp"
 

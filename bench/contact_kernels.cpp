@@ -8,7 +8,7 @@
 #include "pkg/engine/ContactStep.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Plane_PressureGeom.hpp"
 #include "pkg/math/CirclePolygonArea.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 
 namespace roundedmesh {

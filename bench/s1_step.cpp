@@ -37,7 +37,7 @@ const RecordedScene& scene() {
 // S1's model, with friction on every material for friction = 1 (the spring) or 2 (the viscous law).
 ContactModel withFriction(ContactModel model, long friction) {
   if (friction == 0) return model;
-  model.friction = friction == 1 ? FrictionLaw::Spring : FrictionLaw::Viscous;
+  model.options.friction = friction == 1 ? FrictionLaw::Spring : FrictionLaw::Viscous;
   for (RoundedBody& body : model.bodies) {
     body.material.friction = 0.5;
     body.material.tangentialDamping = 10;
@@ -59,7 +59,7 @@ void BM_S1Step(benchmark::State& state) {
   if (state.range(2) > 0) model.skins.candidatesMin = model.skins.candidatesMax = 1e-4 * state.range(2);
   if (state.range(3) > 0) model.skins.candidateSteps = static_cast<Real>(state.range(3));
   if (state.range(4) > 0) model.skins.nearFactor = static_cast<Real>(state.range(4));
-  if (state.range(6) == 1) model.pressure.curvature = CurvatureModel::Principal;
+  if (state.range(6) == 1) model.options.pressure.curvature = CurvatureModel::Principal;
   ContactData data;
   data.timeStep = 1e-4;  // S1's
   if (trajectory)

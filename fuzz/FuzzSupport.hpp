@@ -18,7 +18,7 @@
 #include <unistd.h>
 
 #include "pkg/io/MeshFile.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 
 namespace roundedmesh::fuzz {
 

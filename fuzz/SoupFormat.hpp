@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "pkg/shape/SurfaceRepair.hpp"
+#include "pkg/meshing/SurfaceRepair.hpp"
 
 namespace roundedmesh::fuzz {
 

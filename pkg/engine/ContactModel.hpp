@@ -1,6 +1,6 @@
 // What the contact engine knows that does not change from step to step: the rounded bodies with their
 // meshes and materials, the rigid-shaped partners (planes, YADE Walls, Boxes, Facets and Spheres) with
-// theirs, the options of the pressure law and the friction law. A partner may be a sphere body (rm.add_sphere), the
+// theirs, and the engine's options (EngineOptions.hpp). A partner may be a sphere body (rm.add_sphere), the
 // engine's second kind of body: an analytic Sphere whose contacts with the other partners the engine computes too.
 // Indices into `bodies` and `partners` are the engine's; `id` is YADE's body id.
 #pragma once
@@ -10,8 +10,7 @@
 #include <variant>
 #include <vector>
 
-#include "pkg/law/Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp"
-#include "pkg/law/TangentialSpring.hpp"
+#include "pkg/engine/EngineOptions.hpp"
 #include "pkg/material/HertzMaterial.hpp"
 #include "pkg/shape/Box.hpp"
 #include "pkg/shape/Facet.hpp"
@@ -31,11 +30,6 @@ using PartnerShape = std::variant<Plane, Wall, Box, Facet, Sphere>;
 // deep-contact criterion (DeepContactCriterion.hpp), and the overlap of the time-step estimate (CriticalTimeStep.hpp).
 constexpr Real kDeepestOverlap = 0.1;
 
-// The overlap, as a fraction of the smaller side's size (volume-equivalent radius, or a sphere's radius), past which
-// a growing overlap stops the run (StopRules.hpp): the depth to which two bodies' contact force is measured
-// (doc/validation.md, "Deep overlaps"). A body resting under its weight overlaps about 0.01.
-constexpr Real kStopOverlap = 0.5;
-
 struct RoundedBody {
   int id;
   std::shared_ptr<const RoundedMesh> mesh;  // in the body's principal frame
@@ -43,7 +37,7 @@ struct RoundedBody {
   Real equivalentRadius;  // radius of the sphere of the same volume [m]
 };
 
-// The contact engine's view of a body made of `mesh` (a BodyMesh, pkg/shape/BodyMesh.hpp, or anything with its
+// The contact engine's view of a body made of `mesh` (a BodyMesh, pkg/meshing/BodyMesh.hpp, or anything with its
 // sharedShape() and volume() [m^3]): its shape, material and volume-equivalent radius.
 template <class Mesh>
 RoundedBody roundedBody(int id, const Mesh& mesh, const HertzMaterial& material) {
@@ -75,10 +69,8 @@ struct ListSkins {
 struct ContactModel {
   std::vector<RoundedBody> bodies;
   std::vector<Partner> partners;
-  PressureOptions pressure;
-  FrictionLaw friction = FrictionLaw::Spring;  // the tangential law of every pair (doc/physics.md, "Friction")
+  EngineOptions options;
   ListSkins skins;
-  Real stopOverlap = kStopOverlap;  // infinite: no overlap stops a run (StopRules.hpp)
 };
 
 }  // namespace roundedmesh

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "pkg/common/Overloaded.hpp"
+#include "pkg/law/HertzPressure.hpp"
 #include "pkg/phys/HertzPhys.hpp"
 
 namespace roundedmesh {
@@ -62,7 +63,7 @@ StabilityLimit pairLimit(Side a, Side b, FrictionLaw law, Real impactSpeed) {
       criticalTimeStep(reduced(a.mass, b.mass), phys.effectiveModulus, radius, phys.damping, overlap),
       impactTimeStep(reduced(a.mass, b.mass), phys.effectiveModulus, radius, overlap, impactSpeed));
   if (phys.friction > 0) {
-    const Real normalStiffness = 2 * phys.effectiveModulus * std::sqrt(radius * overlap);
+    const Real normalStiffness = hertzStiffnessAt(phys, radius, overlap);
     const Real stiffness = law == FrictionLaw::Spring ? phys.stiffnessRatio * normalStiffness : 0;
     const Real mass = reduced(a.tangentialMass(), b.mass > 0 ? b.tangentialMass() : 0);
     const Real tangential = leapFrogLimit(mass, stiffness, phys.tangentialDamping);
@@ -141,10 +142,10 @@ StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>
   };
   for (int b : kinds) {
     for (int k : kinds)
-      if (k >= b) consider(pairLimit(side(b), side(k), model.friction, impactSpeed), b, k);
+      if (k >= b) consider(pairLimit(side(b), side(k), model.options.friction, impactSpeed), b, k);
     // Partners other than bodies: a sphere body meets them all, a rounded body every partner.
     for (int p = bodyCount; p < count; ++p)
-      if (b < bodyCount || !isBody(p)) consider(pairLimit(side(b), side(p), model.friction, impactSpeed), b, p);
+      if (b < bodyCount || !isBody(p)) consider(pairLimit(side(b), side(p), model.options.friction, impactSpeed), b, p);
   }
   return limit;
 }

@@ -5,10 +5,9 @@ namespace {
 
 // Body 0 of `model` against its other entity (body 1, or partner 0), in the states given.
 PairEvaluation evaluate(ContactModel& model, const std::vector<BodyState>& bodies,
-                        const std::vector<BodyState>& partners, const PressureOptions& options, bool details,
-                        FrictionLaw friction) {
-  model.pressure = options;
-  model.friction = friction;
+                        const std::vector<BodyState>& partners, const EngineOptions& options, bool details) {
+  options.validate();
+  model.options = options;
   for (const RoundedBody& body : model.bodies) body.material.validate();
   for (const Partner& partner : model.partners) partner.material.validate();
   ContactData data;
@@ -27,31 +26,29 @@ PairEvaluation evaluate(ContactModel& model, const std::vector<BodyState>& bodie
 
 PairEvaluation partnerContact(const RoundedBody& body, const BodyState& state, const PartnerShape& partner,
                               const BodyState& partnerState, const HertzMaterial& partnerMaterial,
-                              const PressureOptions& options, bool details, FrictionLaw friction) {
+                              const EngineOptions& options, bool details) {
   ContactModel model;
   model.bodies.push_back(body);
   model.partners.push_back({-1, partner, partnerMaterial});
-  return evaluate(model, {state}, {partnerState}, options, details, friction);
+  return evaluate(model, {state}, {partnerState}, options, details);
 }
 
 PairEvaluation planeContact(const RoundedBody& body, const BodyState& state, const Plane& plane,
-                            const HertzMaterial& planeMaterial, const PressureOptions& options, bool details,
-                            FrictionLaw friction) {
-  return partnerContact(body, state, plane, BodyState(), planeMaterial, options, details, friction);
+                            const HertzMaterial& planeMaterial, const EngineOptions& options, bool details) {
+  return partnerContact(body, state, plane, BodyState(), planeMaterial, options, details);
 }
 
 PairEvaluation sphereContact(const RoundedBody& body, const BodyState& state, const Sphere& sphere,
                              const BodyState& sphereState, const HertzMaterial& sphereMaterial,
-                             const PressureOptions& options, bool details, FrictionLaw friction) {
-  return partnerContact(body, state, sphere, sphereState, sphereMaterial, options, details, friction);
+                             const EngineOptions& options, bool details) {
+  return partnerContact(body, state, sphere, sphereState, sphereMaterial, options, details);
 }
 
 PairEvaluation bodyContact(const RoundedBody& first, const BodyState& firstState, const RoundedBody& second,
-                           const BodyState& secondState, const PressureOptions& options, bool details,
-                           FrictionLaw friction) {
+                           const BodyState& secondState, const EngineOptions& options, bool details) {
   ContactModel model;
   model.bodies = {first, second};
-  return evaluate(model, {firstState, secondState}, {}, options, details, friction);
+  return evaluate(model, {firstState, secondState}, {}, options, details);
 }
 
 }  // namespace roundedmesh

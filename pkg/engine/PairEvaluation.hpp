@@ -2,8 +2,8 @@
 // against a partner (a plane, a YADE Wall, Box, Facet or analytic Sphere), or against another rounded body. What
 // rm.plane_contact, rm.partner_contact, rm.sphere_contact, rm.body_contact and rm.triangle_contacts return, for
 // validation and for looking inside a contact. Forces [N] and torques [N m] global, each torque about its own body's position; with `details`, every
-// triangle contact as resolvePair sees it. `friction`: the tangential law; the spring of FrictionLaw::Spring starts
-// here, so only its damping acts (a contact with no history). Throws std::invalid_argument naming a material parameter out of range.
+// triangle contact as resolvePair sees it. `options`: the engine's (EngineOptions.hpp); the spring of
+// FrictionLaw::Spring starts here, so only its damping acts (a contact with no history). Throws std::invalid_argument naming a material parameter out of range.
 #pragma once
 
 #include <vector>
@@ -20,20 +20,16 @@ struct PairEvaluation {
 // Against any partner in `partnerState` (a Wall's position, a Box's or a Facet's pose, a sphere's centre).
 PairEvaluation partnerContact(const RoundedBody& body, const BodyState& state, const PartnerShape& partner,
                               const BodyState& partnerState, const HertzMaterial& partnerMaterial,
-                              const PressureOptions& options, bool details = false,
-                              FrictionLaw friction = FrictionLaw::Spring);
+                              const EngineOptions& options, bool details = false);
 
 PairEvaluation planeContact(const RoundedBody& body, const BodyState& state, const Plane& plane,
-                            const HertzMaterial& planeMaterial, const PressureOptions& options, bool details = false,
-                            FrictionLaw friction = FrictionLaw::Spring);
+                            const HertzMaterial& planeMaterial, const EngineOptions& options, bool details = false);
 
 PairEvaluation sphereContact(const RoundedBody& body, const BodyState& state, const Sphere& sphere,
                              const BodyState& sphereState, const HertzMaterial& sphereMaterial,
-                             const PressureOptions& options, bool details = false,
-                            FrictionLaw friction = FrictionLaw::Spring);
+                             const EngineOptions& options, bool details = false);
 
 PairEvaluation bodyContact(const RoundedBody& first, const BodyState& firstState, const RoundedBody& second,
-                           const BodyState& secondState, const PressureOptions& options, bool details = false,
-                            FrictionLaw friction = FrictionLaw::Spring);
+                           const BodyState& secondState, const EngineOptions& options, bool details = false);
 
 }  // namespace roundedmesh

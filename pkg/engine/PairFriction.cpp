@@ -7,8 +7,8 @@ void releaseSpring(TangentialSpring& spring, Real dt, PairSummary& summary) {
   spring = TangentialSpring();
 }
 
-void dropUnusedSpring(const HertzPhys& phys, FrictionLaw law, TangentialSpring* spring, Real dt, PairSummary& summary) {
-  if ((!(phys.friction > 0) || law == FrictionLaw::Viscous) && spring && spring->active())
+void dropUnusedSpring(const PairLaw& law, TangentialSpring* spring, Real dt, PairSummary& summary) {
+  if ((!law.frictional() || law.viscous()) && spring && spring->active())
     releaseSpring(*spring, dt, summary);
 }
 

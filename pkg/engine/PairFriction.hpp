@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "pkg/engine/ContactData.hpp"
-#include "pkg/phys/HertzPhys.hpp"
+#include "pkg/law/PairLaw.hpp"
 
 namespace roundedmesh {
 
@@ -24,7 +24,7 @@ struct ContactShare {
 void releaseSpring(TangentialSpring& spring, Real dt, PairSummary& summary);
 
 // A pair that has no spring now (frictionless materials, or the viscous law) lets go of the one it had.
-void dropUnusedSpring(const HertzPhys& phys, FrictionLaw law, TangentialSpring* spring, Real dt, PairSummary& summary);
+void dropUnusedSpring(const PairLaw& law, TangentialSpring* spring, Real dt, PairSummary& summary);
 
 // The pair's contact as its spring sees it (global frame): normal from body 1 to body 2, slip and spin (about the
 // normal) of body 2 relative to body 1, the contact frame's spin from both bodies' angular velocities, the normal

@@ -33,7 +33,7 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
   const Matrix3r R_BW = s1.orientation.toRotationMatrix().transpose();
   auto inBody = [&](const Vector3r& x) -> Vector3r { return R_BW * (x - s1.position); };
   const GeomOutput out(geoms, &statistics.narrowPhase);
-  const CurvatureModel curvature = model.pressure.curvature;
+  const CurvatureModel curvature = model.options.pressure.curvature;
   const int bodyCount = static_cast<int>(model.bodies.size());
   if (pair.other < bodyCount) {
     const BodyState& s2 = data.bodyStates[pair.other];

@@ -5,15 +5,14 @@
 
 #include "pkg/engine/PairFriction.hpp"
 #include "pkg/engine/PairGeometry.hpp"
-#include "pkg/law/ContactEnergyGradient.hpp"
-#include "pkg/phys/HertzPhys.hpp"
+#include "pkg/law/PairLaw.hpp"
 
 namespace roundedmesh {
 namespace {
 
-// Body 2 of a triangle contact as the energy law sees it (ContactEnergyGradient.hpp), in body 1's frame: the pose
+// Body 2 of a triangle contact as a normal law that needs it sees it (NormalLaws.hpp), in body 1's frame: the pose
 // of a rounded body 2 (x1 = rotation * x2 + translation), or its partner shape.
-struct EnergyFrame {
+struct PartnerFrame {
   const RoundedMesh* mesh2 = nullptr;
   Matrix3r rotation = Matrix3r::Identity();
   Vector3r translation = Vector3r::Zero();
@@ -32,9 +31,9 @@ struct EnergyFrame {
   }
 };
 
-EnergyFrame energyFrame(const ContactModel& model, const BodyPair& pair, const BodyState& s1, const BodyState& s2,
-                        const Matrix3r& R_BW) {
-  EnergyFrame frame;
+PartnerFrame partnerFrame(const ContactModel& model, const BodyPair& pair, const BodyState& s1, const BodyState& s2,
+                          const Matrix3r& R_BW) {
+  PartnerFrame frame;
   const int bodyCount = static_cast<int>(model.bodies.size());
   frame.translation = R_BW * (s2.position - s1.position);
   if (pair.other < bodyCount) {
@@ -66,7 +65,8 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   const HertzMaterial& otherMaterial =
       otherIsBody ? model.bodies[pair.other].material : model.partners[pair.other - bodyCount].material;
   const Matrix3r R_WB = s1.orientation.toRotationMatrix();
-  const HertzPhys phys = Ip2_HertzMaterial_HertzMaterial_HertzPhys(body.material, otherMaterial);
+  const PairLaw law(body.material, otherMaterial, model.options.pressure, model.options.friction);
+  const HertzPhys& phys = law.phys;
   const RoundedMesh& mesh = *body.mesh;
   PairResult result;
   PairSummary& summary = result.summary;
@@ -83,10 +83,10 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   thread_local std::vector<ContactShare> shares;
   shares.clear();
   const size_t listedFrom = contacts ? contacts->size() : 0;
-  const bool energyLaw = model.pressure.normal == NormalLaw::Energy;
-  const EnergyFrame frame = energyLaw ? energyFrame(model, pair, s1, s2, R_WB.transpose()) : EnergyFrame();
+  const bool needsPartner = law.normal->needsPartner;
+  const PartnerFrame frame = needsPartner ? partnerFrame(model, pair, s1, s2, R_WB.transpose()) : PartnerFrame();
   for (const PressureGeom& geom : geoms) {
-    const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, model.pressure);
+    const NormalLoad load = law.normalLoad(geom);
     ++(load.regime == Regime::Direct  ? result.statistics.directContacts
        : load.regime == Regime::Exact ? result.statistics.exactContacts
                                       : result.statistics.quadratureContacts);
@@ -94,20 +94,8 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     const std::array<Vector3r, 3> x_B = {mesh.vertices()[corners[0]], mesh.vertices()[corners[1]],
                                          mesh.vertices()[corners[2]]};
     const std::array<Real, 3> forces = nodeForces(geom.nodes, load);
-    if (energyLaw) {
-      // The elastic force is the energy's gradient; the damping, the rest of the pressure, acts as the paper's.
-      const NormalLoad damping{load.force - load.elasticForce, load.moment - load.elasticMoment, load.regime};
-      addNodeForcesToBody(x_B, nodeForces(geom.nodes, damping), geom.normal, onBody_B);
-      const Real energyAmplitude = 4 * phys.effectiveModulus / (3 * M_PI * geom.radius * geom.radius);
-      const EnergyForces elastic = contactEnergyGradient(geom, load.elasticForce, energyAmplitude, x_B,
-                                                         mesh.rounded(geom.triangle).sphereCentre, frame.partner(geom));
-      for (int k = 0; k < elastic.count; ++k) {
-        onBody_B.force -= elastic.onBody2[k].force;
-        onBody_B.torque -= elastic.onBody2[k].point.cross(elastic.onBody2[k].force);
-      }
-    } else {
-      addNodeForcesToBody(x_B, forces, geom.normal, onBody_B);
-    }
+    const EnergyPartner partner = needsPartner ? frame.partner(geom) : EnergyPartner{};
+    law.normal->apply({geom, load, x_B, forces, mesh.rounded(geom.triangle).sphereCentre, partner, phys}, onBody_B);
     const Vector3r point_B = planePoint(geom, geom.effectivePoint);
     // Fn acts at c + (-Mn_y, Mn_x) / Fn (NodeForces.hpp), so Fn times that point needs no division.
     const Vector3r weighted_B =
@@ -116,8 +104,7 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     normalForce += load.force;
     normals_B += load.force * geom.normal;
     points_B += point_B;
-    // dF/d(delta) = (3/2) F / delta of a Hertz contact, for its elastic part.
-    if (geom.sphereOverlap > 0) stiffness += 1.5 * load.elasticForce / geom.sphereOverlap;
+    if (geom.sphereOverlap > 0) stiffness += hertzStiffness(load.elasticForce, geom.sphereOverlap);
     shares.push_back({load, load.force > 0 ? Vector3r(weighted_B / load.force) : point_B});
     summary.add(geom, load);
     if (contacts) {
@@ -142,9 +129,9 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   for (const PressureGeom& geom : geoms)
     summary.depth = std::max(summary.depth, geom.effectiveOverlap * geom.normal.dot(normal_B));
   TriangleContact* listed = contacts ? contacts->data() + listedFrom : nullptr;
-  dropUnusedSpring(phys, model.friction, spring, data.timeStep, summary);
-  if (phys.friction > 0) {
-    if (model.friction == FrictionLaw::Viscous) {
+  dropUnusedSpring(law, spring, data.timeStep, summary);
+  if (law.frictional()) {
+    if (law.viscous()) {
       viscousFriction(geoms, shares, phys, R_WB, onBody_B, result, listed);
     } else {
       TangentialSpring fresh;

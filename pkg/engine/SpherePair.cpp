@@ -5,6 +5,7 @@
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/PairLoad.hpp"
 #include "pkg/geom/Ig2_Sphere_Partner_PressureGeom.hpp"
+#include "pkg/law/PairLaw.hpp"
 
 namespace roundedmesh {
 
@@ -45,21 +46,20 @@ PairResult resolveSpherePair(const ContactModel& model, const ContactData& data,
   }
   result.statistics.touchingPairs = 1;
   result.statistics.sphereContacts = 1;
-  const HertzPhys phys = Ip2_HertzMaterial_HertzMaterial_HertzPhys(sphere.material, other.material);
-  PressureOptions whole = model.pressure;
-  whole.regime = RegimeChoice::Direct;
-  const NormalLoad load = Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, whole);
+  const PairLaw law(sphere.material, other.material, model.options.pressure, model.options.friction);
+  const HertzPhys& phys = law.phys;
+  const NormalLoad load = law.wholeCircleLoad(geom);
   result.summary.add(geom, load);
   TangentialLoad friction;
-  dropUnusedSpring(phys, model.friction, spring, data.timeStep, result.summary);
-  if (model.friction == FrictionLaw::Viscous) {
+  dropUnusedSpring(law, spring, data.timeStep, result.summary);
+  if (law.viscous()) {
     friction = coulombFriction(geom, load, phys);
     result.summary.frictionPower += -friction.force.dot(geom.slip);
-  } else if (phys.friction > 0) {
+  } else if (law.frictional()) {
     // One contact point: the spring at c, without twist.
     const SpringContact contact =
         springContact(geom.normal, geom.slip, motion.angular.dot(geom.normal), s1, s2, load.force,
-                      phys.stiffnessRatio * 1.5 * load.elasticForce / geom.sphereOverlap);
+                      phys.stiffnessRatio * hertzStiffness(load.elasticForce, geom.sphereOverlap));
     TangentialSpring fresh;
     TangentialSpring& held = spring ? *spring : fresh;
     const SpringLoad spun = tangentialSpring(contact, phys, spring ? data.timeStep : 0, held);

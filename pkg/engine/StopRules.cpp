@@ -86,7 +86,7 @@ std::vector<StopReason> checkStopRules(const ContactModel& model, ContactData& d
   const std::vector<PairRecord>& last = data.keptRecords;
   for (const PairRecord& r : records) {
     const Real size = std::min(sideSize(model, r.body), sideSize(model, r.other));
-    if (!(r.overlap > model.stopOverlap * size)) continue;
+    if (!(r.overlap > model.options.stopOverlap * size)) continue;
     const auto found = std::lower_bound(last.begin(), last.end(), r, before);
     const Real previous = found != last.end() && !before(r, *found) ? found->overlap : 0;
     if (r.overlap > previous) stops.push_back({StopCause::Overlap, r.body, r.other, r.overlap, size, r.point});

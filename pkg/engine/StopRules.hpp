@@ -6,7 +6,7 @@
 //   crossing: a body (rounded or sphere body) whose centre has crossed a Wall's or a Plane's plane, a Facet
 //             (the segment between its centres of the two steps passes through the facet's triangle) or into a
 //             Box since the last step, in which their bounds overlapped (they touched, or were about to);
-//   overlap:  a pair whose overlap exceeds model.stopOverlap times the size of the smaller side (a rounded body's
+//   overlap:  a pair whose overlap exceeds options.stopOverlap times the size of the smaller side (a rounded body's
 //             volume-equivalent radius, a sphere's radius; a flat partner has no size) and has grown since the last
 //             step (a pair that starts that deep is warned of by the scene, and may come apart). The overlap is the
 //             deepest triangle contact's along the pair's normal (PairSummary::depth): against a plane, its depth;

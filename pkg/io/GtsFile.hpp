@@ -28,7 +28,7 @@
 
 #include <string>
 
-#include "pkg/shape/SurfaceRepair.hpp"
+#include "pkg/meshing/SurfaceRepair.hpp"
 #include "pkg/shape/TriangleSurface.hpp"
 
 namespace roundedmesh {

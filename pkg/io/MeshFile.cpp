@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "pkg/io/GtsFile.hpp"
-#include "pkg/shape/SurfaceRepair.hpp"
+#include "pkg/meshing/SurfaceRepair.hpp"
 
 namespace roundedmesh {
 namespace {

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "pkg/shape/SurfaceRepair.hpp"
+#include "pkg/meshing/SurfaceRepair.hpp"
 #include "pkg/shape/TriangleSurface.hpp"
 
 namespace roundedmesh {

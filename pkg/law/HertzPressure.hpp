@@ -31,8 +31,24 @@ struct HertzPressure {
   Real totalForce() const { return amplitude * circleIntegral(); }
 };
 
+// The elastic pressure's amplitude (2 E* / pi) / R* [Pa/m] of a contact of effective radius R* [m].
+inline Real hertzElasticAmplitude(const HertzPhys& phys, Real radius) { return 2 * phys.effectiveModulus / (M_PI * radius); }
+
+// The amplitude k of the contact's elastic energy density e = k (a^2 - r^2)^(3/2), whose delta-derivative is the
+// elastic pressure: k = 4 E* / (3 pi R*^2) [Pa/m^2], the elastic pressure's amplitude times 2 / (3 R*).
+inline Real hertzEnergyAmplitude(const HertzPhys& phys, Real radius) {
+  return hertzElasticAmplitude(phys, radius) * 2 / (3 * radius);
+}
+
+// A Hertz contact's normal stiffness dF/d(delta) [N/m] from its elastic force F [N] at overlap delta [m]:
+// (3/2) F / delta, since F grows as delta^(3/2) (Eq. 7); in closed form 2 E* sqrt(R* delta) (hertzStiffnessAt).
+inline Real hertzStiffness(Real elasticForce, Real overlap) { return 1.5 * elasticForce / overlap; }
+inline Real hertzStiffnessAt(const HertzPhys& phys, Real radius, Real overlap) {
+  return 2 * phys.effectiveModulus * std::sqrt(radius * overlap);
+}
+
 inline HertzPressure hertzPressure(const PressureGeom& geom, const HertzPhys& phys) {
-  const Real elastic = 2 * phys.effectiveModulus / (M_PI * geom.radius);
+  const Real elastic = hertzElasticAmplitude(phys, geom.radius);
   const Real amplitude = elastic * (1 + phys.damping * geom.overlapRate / geom.sphereOverlap);
   return {std::max(amplitude, Real(0)), geom.contactRadius * geom.contactRadius, elastic};
 }

@@ -89,7 +89,7 @@ NormalLoad integrate(const ConvexPolygon& polygon, const Vector2r& effectivePoin
 NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& geom, const HertzPhys& phys,
                                                           const PressureOptions& options) {
   const HertzPressure pressure = hertzPressure(geom, phys);
-  const Real energyAmplitude = pressure.elasticAmplitude * 2 / (3 * geom.radius);
+  const Real energyAmplitude = hertzEnergyAmplitude(phys, geom.radius);
   NormalLoad load =
       geom.elliptical
           ? integrate(circlePolygon(geom), geom.toCircle * (geom.effectivePoint - geom.ellipseCentre), pressure,

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "pkg/shape/SurfaceRepair.hpp"
+#include "pkg/meshing/SurfaceRepair.hpp"
 
 namespace roundedmesh {
 namespace {

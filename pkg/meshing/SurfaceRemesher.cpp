@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "pkg/shape/SurfaceRepair.hpp"
+#include "pkg/meshing/SurfaceRepair.hpp"
 
 namespace roundedmesh {
 namespace {

@@ -14,7 +14,7 @@
 #include <mutex>
 #include <vector>
 
-#include "pkg/bound/TriangleTree.hpp"
+#include "pkg/shape/TriangleTree.hpp"
 #include "pkg/common/Types.hpp"
 #include "pkg/shape/PrincipalCurvature.hpp"
 #include "pkg/shape/SolidDistance.hpp"

@@ -2,6 +2,8 @@
 // plane_contact, partner_contact, sphere_contact and body_contact (pkg/engine/PairEvaluation.hpp): arguments
 // checked and converted here.
 #include <boost/python.hpp>
+#include <omp.h>
+
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -14,86 +16,13 @@
 #include "pkg/engine/ContactStep.hpp"
 #include "pkg/engine/PairEvaluation.hpp"
 #include "pkg/io/SpringRecord.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
+#include "py/module/ExposeEngineOptions.hpp"
 #include "py/module/NumpyConversion.hpp"
 #include "py/module/YadeBridge.hpp"
 
 namespace roundedmesh::python {
 namespace {
-
-// The engine options' names and values as users write them (rm.engine); their defaults are the C++ structs' own
-// (PressureOptions, ContactModel), exported as _core.ENGINE_OPTIONS.
-template <class Enum>
-using Names = std::vector<std::pair<const char*, Enum>>;
-const Names<RegimeChoice> kRegimes = {
-    {"auto", RegimeChoice::Auto}, {"quadrature", RegimeChoice::Quadrature}, {"direct", RegimeChoice::Direct},
-    {"exact", RegimeChoice::Exact}};
-const Names<FrictionLaw> kFrictionLaws = {{"spring", FrictionLaw::Spring}, {"viscous", FrictionLaw::Viscous}};
-const Names<CurvatureModel> kCurvatures = {{"mean", CurvatureModel::Mean}, {"principal", CurvatureModel::Principal}};
-const Names<NormalLaw> kNormalLaws = {{"pressure", NormalLaw::Pressure}, {"energy", NormalLaw::Energy}};
-
-template <class Enum>
-Enum parse(const Names<Enum>& names, const std::string& given, const char* option) {
-  std::string known;  // 'a', 'b' or 'c'
-  for (size_t k = 0; k < names.size(); ++k) {
-    if (given == names[k].first) return names[k].second;
-    known += std::string(k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + "'" + names[k].first + "'";
-  }
-  throw std::invalid_argument(std::string(option) + " must be " + known + ", got '" + given + "'");
-}
-
-template <class Enum>
-const char* nameOf(const Names<Enum>& names, Enum value) {
-  for (const auto& [name, v] : names)
-    if (v == value) return name;
-  throw std::logic_error("an option value without a name");
-}
-
-PressureOptions pressureOptions(Real gamma, const std::string& regime, const std::string& curvature,
-                                const std::string& normal) {
-  if (!(std::isfinite(gamma) && gamma > 0))
-    throw std::invalid_argument("gamma must be positive and finite, got " + std::to_string(gamma));
-  PressureOptions options;
-  options.gamma = gamma;
-  options.regime = parse(kRegimes, regime, "regime");
-  options.curvature = parse(kCurvatures, curvature, "curvature");
-  options.normal = parse(kNormalLaws, normal, "normal");
-  if (options.normal == NormalLaw::Energy && options.curvature != CurvatureModel::Mean)
-    throw std::invalid_argument("normal='energy' takes the contact circle of curvature='mean', not the ellipse of '" +
-                                curvature + "'");
-  return options;
-}
-
-FrictionLaw frictionLaw(const std::string& friction) { return parse(kFrictionLaws, friction, "friction"); }
-
-// {option: default} of rm.engine, in the order of set_options' arguments.
-bp::dict engineOptionDefaults() {
-  const PressureOptions pressure;
-  const ContactModel model;
-  bp::dict d;
-  d["gamma"] = pressure.gamma;
-  d["regime"] = nameOf(kRegimes, pressure.regime);
-  d["friction"] = nameOf(kFrictionLaws, model.friction);
-  d["stop_overlap"] = model.stopOverlap;
-  d["curvature"] = nameOf(kCurvatures, pressure.curvature);
-  d["normal"] = nameOf(kNormalLaws, pressure.normal);
-  return d;
-}
-
-// {option: (allowed values)} of the options that are a choice.
-bp::dict engineOptionChoices() {
-  auto names = [](const auto& table) {
-    bp::list l;
-    for (const auto& entry : table) l.append(entry.first);
-    return bp::tuple(l);
-  };
-  bp::dict d;
-  d["regime"] = names(kRegimes);
-  d["friction"] = names(kFrictionLaws);
-  d["curvature"] = names(kCurvatures);
-  d["normal"] = names(kNormalLaws);
-  return d;
-}
 
 bp::tuple asTuple(const StabilityLimit& limit, int bodyId, int otherId) {
   return bp::make_tuple(limit.timeStep, bodyId, otherId, limit.tangential);
@@ -115,16 +44,12 @@ class SceneContacts {
     const int id = bp::extract<int>(body.attr("id"));
     model_.partners.push_back({id, sphereShape(body, id), material, true});
   }
-  void setOptions(Real gamma, const std::string& regime, const std::string& friction, Real stopOverlap,
-                  const std::string& curvature, const std::string& normal) {
-    if (!(stopOverlap > 0))
-      throw std::invalid_argument("stop_overlap must be positive (math.inf: never), got " + std::to_string(stopOverlap));
-    const PressureOptions pressure = pressureOptions(gamma, regime, curvature, normal);
-    model_.pressure = pressure;
-    model_.friction = frictionLaw(friction);
-    model_.stopOverlap = stopOverlap;
+  void setOptions(const EngineOptions& options) {
+    options.validate();
+    model_.options = options;
     data_.checkedTimeStep = {};  // the limit depends on the friction law
   }
+  const EngineOptions& options() const { return model_.options; }
 
   // One contact step on the current YADE scene (pkg/engine/ContactStep.hpp): the states in, the scene's springs
   // in if this engine did not write them, contactStep, and for a kept step the wrenches and springs out. Returns
@@ -145,6 +70,7 @@ class SceneContacts {
       return report;
     }
     takeSprings(omega);
+    omp_set_num_threads(model_.options.resolvedThreads());  // YADE's loop thread starts the step's parallel region
     const auto read = std::chrono::steady_clock::now();
     const StepReport r = contactStep(model_, data_);
     const auto computed = std::chrono::steady_clock::now();
@@ -404,37 +330,32 @@ bp::tuple asTuple(const PairEvaluation& e) {
 
 bp::tuple planeContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& planePoint,
                        const Vector3r& planeNormal, const HertzMaterial& meshMaterial,
-                       const HertzMaterial& planeMaterial, const Vector3r& vel, const Vector3r& angVel, Real gamma,
-                       const std::string& regime, const std::string& friction, const std::string& curvature, const std::string& normal) {
+                       const HertzMaterial& planeMaterial, const Vector3r& vel, const Vector3r& angVel, const EngineOptions& options) {
   requireFinite(planePoint, "plane_point");
   requireFinite(planeNormal, "plane_normal");
   if (planeNormal.norm() == 0) throw std::invalid_argument("plane_normal must not be zero");
   const PairEvaluation e = roundedmesh::planeContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
                                                      Plane{planePoint, planeNormal.normalized()}, planeMaterial,
-                                                     pressureOptions(gamma, regime, curvature, normal), false,
-                                                     frictionLaw(friction));
+                                                     options);
   return bp::make_tuple(e.onFirst.force, e.onFirst.torque);
 }
 
 bp::tuple sphereContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const Vector3r& centre,
                         Real radius, const HertzMaterial& meshMaterial, const HertzMaterial& sphereMaterial,
                         const Vector3r& vel, const Vector3r& angVel, const Vector3r& sphereVel,
-                        const Vector3r& sphereAngVel, Real gamma, const std::string& regime, bool details,
-                        const std::string& friction, const std::string& curvature, const std::string& normal) {
+                        const Vector3r& sphereAngVel, bool details, const EngineOptions& options) {
   requireFinite(centre, "centre");
   if (!(std::isfinite(radius) && radius > 0))
     throw std::invalid_argument("radius must be positive and finite, got " + std::to_string(radius));
   return asTuple(roundedmesh::sphereContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
                                             Sphere{radius},
                                             bodyState(centre, Quaternionr::Identity(), sphereVel, sphereAngVel, 2),
-                                            sphereMaterial, pressureOptions(gamma, regime, curvature, normal), details,
-                                            frictionLaw(friction)));
+                                            sphereMaterial, options, details));
 }
 
 bp::tuple partnerContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const bp::object& partner,
                          const HertzMaterial& meshMaterial, const HertzMaterial& partnerMaterial, const Vector3r& vel,
-                         const Vector3r& angVel, Real gamma, const std::string& regime, bool details,
-                         const std::string& friction, const std::string& curvature, const std::string& normal) {
+                         const Vector3r& angVel, bool details, const EngineOptions& options) {
   const int id = bp::extract<int>(partner.attr("id"));
   const PartnerShape shape = yadeShape(partner, id);
   const bp::object s = partner.attr("state");
@@ -451,18 +372,16 @@ bp::tuple partnerContact(const BodyMesh& mesh, const Vector3r& pos, const Quater
   partnerState.orientation.normalize();
   return asTuple(roundedmesh::partnerContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
                                              shape, partnerState, partnerMaterial,
-                                             pressureOptions(gamma, regime, curvature, normal), details, frictionLaw(friction)));
+                                             options, details));
 }
 
 bp::tuple bodyContact(const BodyMesh& mesh1, const Vector3r& pos1, const Quaternionr& ori1, const BodyMesh& mesh2,
                       const Vector3r& pos2, const Quaternionr& ori2, const HertzMaterial& material1,
                       const HertzMaterial& material2, const Vector3r& vel1, const Vector3r& angVel1,
-                      const Vector3r& vel2, const Vector3r& angVel2, Real gamma, const std::string& regime,
-                      bool details, const std::string& friction, const std::string& curvature,
-                      const std::string& normal) {
+                      const Vector3r& vel2, const Vector3r& angVel2, bool details, const EngineOptions& options) {
   return asTuple(roundedmesh::bodyContact(roundedBody(0, mesh1, material1), bodyState(pos1, ori1, vel1, angVel1, 1),
                                           roundedBody(1, mesh2, material2), bodyState(pos2, ori2, vel2, angVel2, 2),
-                                          pressureOptions(gamma, regime, curvature, normal), details, frictionLaw(friction)));
+                                          options, details));
 }
 
 const char* partnerKindName(const Plane&) { return "Plane"; }
@@ -479,9 +398,8 @@ void exposeContactStep() {
       .def("add_body", &SceneContacts::addBody, (bp::arg("id"), bp::arg("mesh"), bp::arg("material")))
       .def("add_partner", &SceneContacts::addPartner, (bp::arg("body"), bp::arg("material")))
       .def("add_sphere", &SceneContacts::addSphere, (bp::arg("body"), bp::arg("material")))
-      .def("set_options", &SceneContacts::setOptions,
-           (bp::arg("gamma"), bp::arg("regime"), bp::arg("friction"), bp::arg("stop_overlap"), bp::arg("curvature"),
-            bp::arg("normal")))
+      .def("set_options", &SceneContacts::setOptions, bp::arg("options"))
+      .add_property("options", bp::make_function(&SceneContacts::options, bp::return_value_policy<bp::copy_const_reference>()))
       .def("step", &SceneContacts::step, bp::arg("O"))
       .def("stability_limit", &SceneContacts::stabilityLimit, (bp::arg("O"), bp::arg("impact_speed") = 0.0))
       .add_property("statistics", &SceneContacts::statistics)
@@ -490,55 +408,21 @@ void exposeContactStep() {
       .add_property("keep_triangle_contacts", &SceneContacts::keepTriangleContacts,
                     &SceneContacts::setKeepTriangleContacts);
 
-  // The engine's constants and options, declared once in C++ (pkg/engine/ContactModel.hpp, ContactStep.hpp).
+  // The engine's constants, declared once in C++ (pkg/engine/EngineOptions.hpp, ContactModel.hpp, ContactStep.hpp).
   bp::scope().attr("STOP_OVERLAP") = kStopOverlap;
   bp::scope().attr("DEEPEST_OVERLAP") = kDeepestOverlap;
   bp::scope().attr("FAST_STEP") = kFastStep;
-  bp::scope().attr("ENGINE_OPTIONS") = engineOptionDefaults();
-  bp::scope().attr("ENGINE_CHOICES") = engineOptionChoices();
-  const PressureOptions pressure;
-  const char* regime = nameOf(kRegimes, pressure.regime);
-  const char* friction = nameOf(kFrictionLaws, ContactModel().friction);
-  const char* curvature = nameOf(kCurvatures, pressure.curvature);
-  const char* normalLaw = nameOf(kNormalLaws, pressure.normal);
   bp::def("partner_kind", +[](const bp::object& body) {
             const int id = bp::extract<int>(body.attr("id"));
             return std::visit([](const auto& shape) { return partnerKindName(shape); }, yadeShape(body, id));
           }, bp::arg("body"),
           "'Wall', 'Box', 'Facet' or 'Sphere' for a body that can be a contact partner; ValueError otherwise.");
 
-  bp::def("plane_contact", &planeContact,
-          (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("plane_point"), bp::arg("plane_normal"),
-           bp::arg("mesh_material"), bp::arg("plane_material"), bp::arg("vel") = Vector3r(Vector3r::Zero()),
-           bp::arg("ang_vel") = Vector3r(Vector3r::Zero()), bp::arg("gamma") = pressure.gamma, bp::arg("regime") = regime,
-           bp::arg("friction") = friction, bp::arg("curvature") = curvature, bp::arg("normal") = normalLaw),
-          "(force, torque) on a rounded body at pos, ori, moving with vel, ang_vel, pressed against the fixed\n"
-          "plane through plane_point with plane_normal pointing toward the body side. Torque is about pos.\n"
-          "gamma and regime ('auto', 'quadrature', 'direct') select the pressure integration (Eq. 14); friction\n"
-          "('spring', 'viscous') the tangential law, curvature ('mean', 'principal') the contact's curvature and\n"
-          "normal ('pressure', 'energy') how the elastic force acts, as\n"
-          "for rm.engine: the spring of a contact evaluated once has no history, so only its damping acts.");
-
-  const Vector3r zero = Vector3r::Zero();
-  bp::def("_sphere_contact", &sphereContact,
-          (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("centre"), bp::arg("radius"),
-           bp::arg("mesh_material"), bp::arg("sphere_material"), bp::arg("vel") = zero, bp::arg("ang_vel") = zero,
-           bp::arg("sphere_vel") = zero, bp::arg("sphere_ang_vel") = zero, bp::arg("gamma") = pressure.gamma,
-           bp::arg("regime") = regime, bp::arg("details") = false, bp::arg("friction") = friction,
-           bp::arg("curvature") = curvature, bp::arg("normal") = normalLaw),
-          "(F1, T1, F2, T2, contacts): see roundedmesh.sphere_contact.");
-  bp::def("_partner_contact", &partnerContact,
-          (bp::arg("mesh"), bp::arg("pos"), bp::arg("ori"), bp::arg("partner"), bp::arg("mesh_material"),
-           bp::arg("partner_material"), bp::arg("vel") = zero, bp::arg("ang_vel") = zero, bp::arg("gamma") = pressure.gamma,
-           bp::arg("regime") = regime, bp::arg("details") = false, bp::arg("friction") = friction,
-           bp::arg("curvature") = curvature, bp::arg("normal") = normalLaw),
-          "(F1, T1, F2, T2, contacts): see roundedmesh.partner_contact.");
-  bp::def("_body_contact", &bodyContact,
-          (bp::arg("mesh1"), bp::arg("pos1"), bp::arg("ori1"), bp::arg("mesh2"), bp::arg("pos2"), bp::arg("ori2"),
-           bp::arg("material1"), bp::arg("material2"), bp::arg("vel1") = zero, bp::arg("ang_vel1") = zero,
-           bp::arg("vel2") = zero, bp::arg("ang_vel2") = zero, bp::arg("gamma") = pressure.gamma, bp::arg("regime") = regime,
-           bp::arg("details") = false, bp::arg("friction") = friction, bp::arg("curvature") = curvature, bp::arg("normal") = normalLaw),
-          "(F1, T1, F2, T2, contacts): see roundedmesh.body_contact.");
+  // One contact evaluated once (roundedmesh/contact.py gives them their defaults and documentation).
+  bp::def("_plane_contact", &planeContact);
+  bp::def("_sphere_contact", &sphereContact);
+  bp::def("_partner_contact", &partnerContact);
+  bp::def("_body_contact", &bodyContact);
 }
 
 }  // namespace roundedmesh::python

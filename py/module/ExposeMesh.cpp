@@ -1,4 +1,4 @@
-// roundedmesh.Mesh: a closed rounded mesh in its principal frame (pkg/shape/BodyMesh.hpp), from arrays,
+// roundedmesh.Mesh: a closed rounded mesh in its principal frame (pkg/meshing/BodyMesh.hpp), from arrays,
 // files or the shape generators.
 #include <boost/python.hpp>
 #include <algorithm>
@@ -13,14 +13,14 @@
 #include "pkg/meshing/RoundedTetrahedron.hpp"
 #include "pkg/meshing/Superellipsoid.hpp"
 #include "pkg/meshing/SurfaceRemesher.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/CapTolerance.hpp"
 #include "pkg/shape/Curvature.hpp"
 #include "pkg/shape/Cylinder.hpp"
 #include "pkg/shape/Distortion.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "pkg/meshing/Spheroid.hpp"
-#include "pkg/shape/SurfaceRepair.hpp"
+#include "pkg/meshing/SurfaceRepair.hpp"
 #include "py/module/NumpyConversion.hpp"
 
 namespace roundedmesh::python {

@@ -6,6 +6,7 @@
 namespace roundedmesh::python {
 void exposeMesh();
 void exposeMaterial();
+void exposeEngineOptions();
 void exposeContactStep();
 }  // namespace roundedmesh::python
 
@@ -13,5 +14,6 @@ BOOST_PYTHON_MODULE(_core) {
   boost::python::numpy::initialize();
   roundedmesh::python::exposeMesh();
   roundedmesh::python::exposeMaterial();
+  roundedmesh::python::exposeEngineOptions();
   roundedmesh::python::exposeContactStep();
 }

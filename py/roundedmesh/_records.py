@@ -5,7 +5,9 @@ O.saveTmp/O.loadTmp and the GUI's reload keep the rounded bodies:
     roundedmesh.partner.<id>   a contact partner: its material
     roundedmesh.sphere.<id>    a sphere body: its material
     roundedmesh.revision       changes with every edit; the engine rebuilds its state when it differs
-    roundedmesh.options        the options of the scene's engine (rm.engine), as JSON
+    roundedmesh.options.<key>  the options of an engine (rm.engine), as EngineOptions.record()'s JSON; its
+                               PyRunner's command names the key, a hash of the record
+    roundedmesh.options        the options of the engine made or run last: those rm.critical_timestep uses
     roundedmesh.springs        the contacts' tangential springs after the last step (doc/physics.md, "Friction"),
                                written by the step itself (py/module/ExposeEngine.cpp; the record is
                                pkg/io/SpringRecord.hpp's): "<token>:<record>"; a token the engine did not write
@@ -22,7 +24,7 @@ import numpy as np
 from yade import O
 from yade.minieigenHP import Quaternion, Vector3
 
-from ._core import ENGINE_OPTIONS, HertzMaterial, Mesh
+from ._core import EngineOptions, HertzMaterial, Mesh
 
 _PREFIX = "roundedmesh."
 _REVISION = _PREFIX + "revision"
@@ -124,13 +126,23 @@ def _load_mesh(key):
 
 
 
+def _options_from_record(text):
+    """The EngineOptions of a record (JSON); a field the record lacks (a scene saved before it existed) at its
+    default."""
+    given = json.loads(text) if text else {}
+    return EngineOptions(**{k: v for k, v in given.items() if k in EngineOptions.fields})
+
+
 def _engine_options():
-    """The options of the scene's engine (roundedmesh.options), the defaults for any it does not name (a scene
-    saved before the option existed) or if the scene has no engine yet."""
-    stored = _tag("options")
-    given = json.loads(stored) if stored else {}
-    return {**ENGINE_OPTIONS, **{k: v for k, v in given.items() if k in ENGINE_OPTIONS}}
+    """The options of the scene's engine made or run last (roundedmesh.options); the defaults if it has none."""
+    return _options_from_record(_tag("options"))
 
 
-def _set_engine_options(options):
-    _set_tag("options", json.dumps(options, sort_keys=True))
+def _store_engine_options(options):
+    """Keeps `options` (EngineOptions) in the scene as those of its engine made last; returns the key of their
+    record, which the engine's command names."""
+    text = json.dumps(options.record(), sort_keys=True)
+    key = hashlib.sha1(text.encode()).hexdigest()[:12]
+    _set_tag("options." + key, text)
+    _set_tag("options", text)
+    return key

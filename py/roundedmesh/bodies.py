@@ -169,7 +169,7 @@ def _mesh_for_error(mesh, error):
     """The mesh of rm.cheapest_model(mesh, error), warning when the scene's engine options are not the ones its
     error was measured with (they belong to rm.engine, not to a body)."""
     choice = cheapest_model(mesh, error)
-    scene_options = {k: _engine_options()[k] for k in choice.engine_options}
+    scene_options = {k: _engine_options().record()[k] for k in choice.engine_options}
     if scene_options != choice.engine_options:
         warnings.warn(f"add_body(error={error}): the mesh's error was measured with rm.engine options "
                       f"{choice.engine_options}; this scene's engine has {scene_options}: give "

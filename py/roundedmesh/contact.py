@@ -1,61 +1,77 @@
 """One contact evaluated without a YADE scene, through the same pipeline the engine runs each step: for
 validation, for pictures, and to look inside a contact.
 
+    plane_contact(mesh, pos, ori, plane_point, plane_normal, mesh_material, plane_material, ...) -> (F1, T1)
     body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, ...) -> (F1, T1, F2, T2)
     sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, ...) -> (F1, T1, F2, T2)
     partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, ...) -> (F1, T1, F2, T2)
     triangle_contacts(mesh1, pos1, ori1, mesh2_or_radius, pos2, ori2, ...) -> the triangle pairs in contact
 
 Forces [N] and torques [N m] are global; each torque is about its own body's position. Velocities [m/s] and
-angular velocities [rad/s] are global. gamma and regime choose the pressure integration, friction ('spring' or
-'viscous') the tangential law, curvature ('mean' or 'principal') the contact's shape and normal ('pressure' or
-'energy') how its elastic force acts, as for engine(); a contact
-evaluated once has no history, so the spring's displacement is zero and only its damping -c v_t acts (capped by
-Coulomb).
+angular velocities [rad/s] are global. The engine's options apply as for engine(): `options=` an EngineOptions, or
+its fields by name (gamma=, regime=, friction=, curvature=, normal=, ...), not both; a contact evaluated once has
+no history, so the spring's displacement is zero and only its damping -c v_t acts (capped by Coulomb).
 """
 import numpy as np
 
-from ._core import ENGINE_OPTIONS, _body_contact, _partner_contact, _sphere_contact
+from ._core import EngineOptions, _body_contact, _partner_contact, _plane_contact, _sphere_contact
 
 _ZERO = (0.0, 0.0, 0.0)
-# The engine's defaults (pkg/law, pkg/engine: _core.ENGINE_OPTIONS).
-_GAMMA, _REGIME, _FRICTION, _CURVATURE, _NORMAL = (ENGINE_OPTIONS[k]
-                                                   for k in ("gamma", "regime", "friction", "curvature", "normal"))
+
+
+def engine_options(options=None, **named):
+    """`options` (an EngineOptions) or, without it, the EngineOptions of the fields `named`: what engine() and the
+    contact functions take. TypeError for both at once, an unknown name or a value of the wrong type, ValueError for
+    a value out of range, each naming the option."""
+    if options is None:
+        return EngineOptions(**named)
+    if not isinstance(options, EngineOptions):
+        raise TypeError(f"options: expected an EngineOptions, got {options!r}")
+    if named:
+        raise TypeError(f"options= and options by name ({', '.join(named)}) together; use one: "
+                        "EngineOptions(**{**options.record(), ...}) for a variant")
+    return options
+
+
+def plane_contact(mesh, pos, ori, plane_point, plane_normal, mesh_material, plane_material, vel=_ZERO,
+                  ang_vel=_ZERO, options=None, **named):
+    """(force, torque) on a rounded body (Mesh `mesh` at pos, turned by ori, moving with vel, ang_vel) pressed
+    against the fixed plane through plane_point whose normal plane_normal points toward the body. Torque about
+    pos."""
+    return _plane_contact(mesh, pos, ori, plane_point, plane_normal, mesh_material, plane_material, vel, ang_vel,
+                          engine_options(options, **named))
 
 
 def body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
-                 vel2=_ZERO, ang_vel2=_ZERO, gamma=_GAMMA, regime=_REGIME, friction=_FRICTION,
-                 curvature=_CURVATURE, normal=_NORMAL):
+                 vel2=_ZERO, ang_vel2=_ZERO, options=None, **named):
     """(force on 1, torque on 1, force on 2, torque on 2) of two rounded bodies: Mesh mesh1 in its principal
     frame placed at pos1 turned by ori1, likewise mesh2; materials are HertzMaterials."""
     return _body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1, ang_vel1, vel2, ang_vel2,
-                         gamma, regime, False, friction, curvature, normal)[:4]
+                         False, engine_options(options, **named))[:4]
 
 
 def sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel=_ZERO, ang_vel=_ZERO,
-                   sphere_vel=_ZERO, sphere_ang_vel=_ZERO, gamma=_GAMMA, regime=_REGIME, friction=_FRICTION,
-                   curvature=_CURVATURE, normal=_NORMAL):
+                   sphere_vel=_ZERO, sphere_ang_vel=_ZERO, options=None, **named):
     """(force on the body, torque on it, force on the sphere, torque on it) of a rounded body against an
     analytic sphere of `radius` [m] centred at `centre` (what a YADE Sphere partner is)."""
     return _sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_material, vel, ang_vel, sphere_vel,
-                           sphere_ang_vel, gamma, regime, False, friction, curvature, normal)[:4]
+                           sphere_ang_vel, False, engine_options(options, **named))[:4]
 
 
-def partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel=_ZERO, ang_vel=_ZERO, gamma=_GAMMA,
-                    regime=_REGIME, friction=_FRICTION, curvature=_CURVATURE, details=False, normal=_NORMAL):
+def partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel=_ZERO, ang_vel=_ZERO, details=False,
+                    options=None, **named):
     """(force on the body, torque on it, force on the partner, torque on it about its position) of a rounded body
     (Mesh `mesh` placed at pos, turned by ori) against `partner`, a YADE Body with a Wall, Box, Facet or Sphere shape
     at its own pose and velocity (it need not be in O.bodies), made of `partner_material`. What the engine computes
     for that pair in a step. With details=True a fifth item lists the triangle contacts as dicts (as
     triangle_contacts' rows)."""
-    evaluated = _partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel, ang_vel, gamma,
-                                 regime, details, friction, curvature, normal)
+    evaluated = _partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel, ang_vel, details,
+                                 engine_options(options, **named))
     return evaluated if details else evaluated[:4]
 
 
 def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1=_ZERO, ang_vel1=_ZERO,
-                      vel2=_ZERO, ang_vel2=_ZERO, gamma=_GAMMA, regime=_REGIME, friction=_FRICTION,
-                      curvature=_CURVATURE, normal=_NORMAL):
+                      vel2=_ZERO, ang_vel2=_ZERO, options=None, **named):
     """The triangle pairs in contact in body_contact's configuration, as a dict of numpy arrays with one row
     per pair. `mesh2` may instead be a number: the radius of an analytic sphere centred at pos2 (ori2 is then
     ignored). Columns:
@@ -73,12 +89,13 @@ def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2
     With curvature='principal', an elliptical contact lists its approach delta as sphere_overlap, and as radius and
     contact_radius those of the circle its ellipse is mapped to, sqrt(a b) (doc/physics.md, "Principal
     curvatures")."""
+    options = engine_options(options, **named)
     if isinstance(mesh2, (int, float)):
         listed = _sphere_contact(mesh1, pos1, ori1, pos2, float(mesh2), material1, material2, vel1, ang_vel1, vel2,
-                                 ang_vel2, gamma, regime, True, friction, curvature, normal)[4]
+                                 ang_vel2, True, options)[4]
     else:
         listed = _body_contact(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2, vel1, ang_vel1, vel2,
-                               ang_vel2, gamma, regime, True, friction, curvature, normal)[4]
+                               ang_vel2, True, options)[4]
     columns = {}
     for name in ("triangle1", "triangle2"):
         columns[name] = np.array([c[name] for c in listed], dtype=int)

@@ -1,21 +1,22 @@
 """The engine of a scene with rounded bodies (rm.engine), and its step: a YADE PyRunner that calls step() each
 iteration, between ForceResetter and NewtonIntegrator. The step itself is C++ (pkg/engine/ContactStep.hpp, through
 _core.SceneContacts): what stays here is building its state from the scene's tags, raising the error that stops
-the run, and the warnings, from the step's report.
+the run, and the warnings, from the step's report. The engine's options (EngineOptions) are kept in the scene's
+tags, and its command names their record by key: the step sets them in the C++ model when the key changes, and
+otherwise crosses into C++ once, for the step itself.
 """
 import functools
 import json
-import math
-import numbers
 import sys
 import warnings
 
 from yade import ForceResetter, NewtonIntegrator, O, PyRunner
 
-from ._core import DEEPEST_OVERLAP, ENGINE_OPTIONS, FAST_STEP, SceneContacts, partner_kind
-from ._records import (_REVISION, _engine_options, _load_mesh, _material, _new_revision, _set_engine_options,
-                       _set_tag, _tag, _tags_named)
+from ._core import DEEPEST_OVERLAP, FAST_STEP, EngineOptions, SceneContacts, partner_kind
+from ._records import (_REVISION, _engine_options, _load_mesh, _material, _new_revision, _options_from_record,
+                       _set_tag, _store_engine_options, _tag, _tags_named)
 from .bodies import _body_or_none
+from .contact import engine_options
 
 _ENGINE_COMMAND = "__import__('roundedmesh').scene.step"
 # STOP_OVERLAP, DEEPEST_OVERLAP and FAST_STEP come from _core (pkg/engine/ContactModel.hpp, ContactStep.hpp):
@@ -28,56 +29,17 @@ DEEP_OVERLAP = DEEPEST_OVERLAP
 _WARNED_PAIRS = 10
 
 
-def engine(label="", **options):
-    """The engine to put in O.engines between ForceResetter and NewtonIntegrator. Options:
-      gamma        -- expected number of quadrature points in a contact circle below which a triangle contact
-                      uses the direct regime (Eq. 14); default 10, as in the paper
-      regime       -- 'auto' (Eq. 14), or 'quadrature' / 'direct' to force one regime (for validation), or
-                      'exact': the pressure integrated over each contact's S n Omega in closed form, no quadrature
-                      error and no switch between regimes (doc/physics.md, "The exact regime")
-      friction     -- the tangential law of every contact: 'spring' (default), an elastic spring-dashpot per body
-                      pair capped by Coulomb, with which bodies rest on slopes; or 'viscous', the paper's no-slip
-                      force -c v_t (Eqs. 18-21), with which nothing in contact ever stands still (doc/physics.md,
-                      "Friction")
-      stop_overlap -- a pair whose overlap grows past this fraction of the smaller side's size (r_eq, or a
-                      sphere's radius) stops the run; default STOP_OVERLAP = 0.5, math.inf never
-    The options are kept in the scene's tags too (roundedmesh.options), for rm.critical_timestep.
-      curvature    -- 'mean' (default): the paper's contact circle from each triangle's mean curvature (Eq. 1);
-                      'principal': Hertz's contact ellipse from both principal curvatures of each triangle
-                      (Mesh.principal_curvatures), concave triangles following the smooth surface
-                      (doc/physics.md, "Principal curvatures: the contact ellipse")
-      normal       -- 'pressure' (default): each triangle contact's elastic force is its integrated pressure at its
-                      centre of pressure (Eq. 15, the paper's); 'energy': the exact gradient of the contacts' energy,
-                      the energy density integrated over each S n Omega, so that the elastic force does no work
-                      round a closed path (doc/physics.md, "The energy law"); curvature 'mean', every partner
-    A body whose centre passes through a Wall, Facet or Box it was near in the step before stops the run too
-    (doc/user-guide.md, "Choosing the time step").
-    """
-    unknown = sorted(set(options) - set(ENGINE_OPTIONS))
-    if unknown:
-        raise TypeError(f"engine: unknown option(s) {', '.join(unknown)}; known: {', '.join(ENGINE_OPTIONS)}, label")
-    chosen = {**ENGINE_OPTIONS, **options}
-    if isinstance(chosen["gamma"], bool) or not isinstance(chosen["gamma"], numbers.Real):
-        raise TypeError(f"gamma: expected a number, got {chosen['gamma']!r}")
-    chosen["gamma"] = float(chosen["gamma"])
-    if isinstance(chosen["stop_overlap"], bool) or not isinstance(chosen["stop_overlap"], numbers.Real):
-        raise TypeError(f"stop_overlap: expected a number, got {chosen['stop_overlap']!r}")
-    if not chosen["stop_overlap"] > 0:
-        raise ValueError(f"stop_overlap: must be positive (math.inf: never), got {chosen['stop_overlap']!r}")
-    chosen["stop_overlap"] = float(chosen["stop_overlap"])
-    for name, value in (("regime", chosen["regime"]), ("friction", chosen["friction"]),
-                        ("curvature", chosen["curvature"]), ("normal", chosen["normal"]), ("label", label)):
-        if not isinstance(value, str):
-            raise TypeError(f"{name}: expected a string, got {value!r}")
-    SceneContacts().set_options(**chosen)  # refuses a value out of range, naming the option
-    _set_engine_options(chosen)
-    arguments = ", ".join(f"{k}={_literal(v)}" for k, v in chosen.items())
-    return PyRunner(command=f"{_ENGINE_COMMAND}({arguments})", iterPeriod=1, initRun=True, label=label)
-
-
-def _literal(value):
-    """`value` as Python source that evaluates to it (repr(math.inf) is 'inf', which does not)."""
-    return f"float('{value}')" if isinstance(value, float) and not math.isfinite(value) else repr(value)
+def engine(label="", options=None, **named):
+    """The engine to put in O.engines between ForceResetter and NewtonIntegrator. Its options: `options=` an
+    rm.EngineOptions, or its fields by name (rm.engine(regime='exact')), every one left out at its default;
+    help(rm.EngineOptions) lists them (gamma, regime, friction, stop_overlap, curvature, normal, threads) with their
+    meanings and allowed values. The options are kept in the scene (O.tags), so that O.save keeps them and
+    rm.critical_timestep uses them. A body whose centre passes through a Wall, Facet or Box it was near in the step before stops the run too
+    (doc/user-guide.md, "Choosing the time step")."""
+    if not isinstance(label, str):
+        raise TypeError(f"label: expected a string, got {label!r}")
+    key = _store_engine_options(engine_options(options, **named))
+    return PyRunner(command=f"{_ENGINE_COMMAND}({key!r})", iterPeriod=1, initRun=True, label=label)
 
 
 class _SceneState:
@@ -104,23 +66,39 @@ class _SceneState:
                 self.partner_ids.append(body_id)
         self.materials = materials
         self.options = None
+        self.options_key = None  # the key of the options the last step ran with (_follow)
+        self.keeps_triangle_forces = False
         self.stepped_iteration = None  # O.iter of the last step computed; None before the first
         self.warned_fast = False  # whether a body has been too fast for the step (_warn_fast_bodies)
 
-    def set_options(self, options):
+    def _apply(self, options):
         if options != self.options:
-            self.contacts.set_options(**options)
-            if options["friction"] == "viscous" and (self.options is None or self.options["friction"] != "viscous"):
+            self.contacts.set_options(options)
+            if options.friction == "viscous" and (self.options is None or self.options.friction != "viscous"):
                 _warn_viscous_without_damping(self.materials)
             self.options = options
-            if options != _engine_options():
-                _set_engine_options(options)
+
+    def follow(self, key, legacy):
+        """Runs the next steps with the options of the engine whose command names `key`, or (a scene saved before
+        the options were kept by key, whose command names them) with `legacy`; they become the scene's."""
+        if key is None:
+            key = "named:" + repr(sorted(legacy.items()))
+        if key == self.options_key:
+            return
+        text = _tag("options." + key)
+        options = _options_from_record(text) if text else EngineOptions(**legacy)
+        self._apply(options)
+        self.options_key = key
+        record = json.dumps(options.record(), sort_keys=True)
+        if _tag("options") != record:
+            _set_tag("options", record)
 
     def stability(self, impact_speed=0.0):
         """(limit [s], body id, id of the other body, whether the tangential contact sets it) for the masses and
         inertias the bodies have in YADE now and the scene's engine options, and with impact_speed > 0 for impacts
         at that speed [m/s]. A body erased since the last step (the next step forgets it) puts no limit."""
-        self.set_options(_engine_options())
+        self._apply(_engine_options())
+        self.options_key = None  # the next step sets its engine's own
         return self.contacts.stability_limit(O, float(impact_speed))
 
 
@@ -183,9 +161,9 @@ def _stop_the_run(step):
     stands alone, and the excepthook that PyErr_Print calls for it prints nothing and drops the traceback
     that YADE formats into its message. The hook is restored as soon as it has run."""
     @functools.wraps(step)
-    def stopping_step(**options):
+    def stopping_step(*args, **kwargs):
         try:
-            step(**options)
+            step(*args, **kwargs)
         except Exception as cause:
             if getattr(cause, "stops_the_run", False):  # from the step's own retry after erased bodies
                 raise
@@ -222,18 +200,21 @@ def _quiet_in_pyrunner(error):
 
 
 @_stop_the_run
-def step(**options):
-    """One contact step on the current scene; run by the engine's PyRunner."""
+def step(options=None, **legacy):
+    """One contact step on the current scene; run by the engine's PyRunner, whose command names the key of its
+    options' record in the scene's tags (a scene saved before names the options themselves: `legacy`)."""
     state = _current_state()
     if state is None:
         return
-    state.set_options({**ENGINE_OPTIONS, **options})  # a scene saved before an option existed has the default
+    state.follow(options, legacy)
     _check_engines()
-    state.contacts.keep_triangle_contacts = _keeps_triangle_forces()
+    keep = _keeps_triangle_forces()
+    if keep != state.keeps_triangle_forces:
+        state.contacts.keep_triangle_contacts = state.keeps_triangle_forces = keep
     report = state.contacts.step(O)
     if "missing" in report:  # bodies erased from the scene leave the engine too
         _forget(report["missing"])
-        step(**options)
+        step(options, **legacy)
         return
     if report["unstable"]:  # nothing was computed
         raise ValueError(_unstable_message(state, report["unstable"]))
@@ -317,7 +298,7 @@ def _stop_message(state, report):
     else:
         what = (f"{name} overlaps {other_name} by {overlap:.3g} m ({overlap / size:.2f} "
                 f"{'of the smaller ' + unit if both_sized else unit}, {unit} = {size:.3g} m) {where}, and the overlap grows: "
-                f"past {state.options['stop_overlap']:g} {unit} (rm.engine(stop_overlap=...)) the contact no longer "
+                f"past {state.options.stop_overlap:g} {unit} (rm.engine(stop_overlap=...)) the contact no longer "
                 "describes it")
     speed, bound = report["stop_speed"], report["stop_time_step"]
     own = _size_name(state, body)

@@ -11,7 +11,7 @@
 
 #include "pkg/engine/BroadPhase.hpp"
 #include "pkg/engine/ContactStep.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 
 namespace roundedmesh {

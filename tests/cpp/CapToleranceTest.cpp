@@ -10,7 +10,7 @@
 
 #include "pkg/meshing/MeshPreparation.hpp"
 #include "pkg/meshing/SurfaceRemesher.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/CapTolerance.hpp"
 #include "pkg/shape/Curvature.hpp"
 #include "pkg/shape/Icosphere.hpp"

@@ -19,7 +19,7 @@
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/PairLoad.hpp"
 #include "pkg/meshing/Spheroid.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "tests/cpp/TestSupport.hpp"
 
@@ -39,7 +39,7 @@ struct Pair {
     pairGeometry(model, data, {0, 1}, geoms, statistics);
     const HertzPhys phys = Ip2_HertzMaterial_HertzMaterial_HertzPhys(kRubber, kRubber);
     Real sum = 0;
-    for (const PressureGeom& g : geoms) sum += Law2_PressureGeom_HertzPhys_IntegratedPressure(g, phys, model.pressure).elasticEnergy;
+    for (const PressureGeom& g : geoms) sum += Law2_PressureGeom_HertzPhys_IntegratedPressure(g, phys, model.options.pressure).elasticEnergy;
     return sum;
   }
   // The wrench on body 0 or on the other side, torque about its own position.
@@ -106,7 +106,7 @@ TEST(ContactEnergy, TheForceBetweenTwoBodiesIsMinusTheEnergysGradient) {
   Real worstPressureMiss = 0;
   for (int pose = 0; pose < 4; ++pose) {
     Pair pair;
-    pair.model.pressure.normal = NormalLaw::Energy;
+    pair.model.options.pressure.normal = NormalLaw::Energy;
     pair.model.bodies = {roundedBody(0, distortedBall(), kRubber), roundedBody(1, spheroid(), kRubber)};
     pair.data.resize(pair.model);
     pair.data.bodyStates[0] = test::at(Vector3r::Zero(), randomRotation(random));
@@ -125,8 +125,8 @@ TEST(ContactEnergy, TheForceBetweenTwoBodiesIsMinusTheEnergysGradient) {
     expectGradient(pair, true, pair.data.bodyStates[1], "two bodies, the second");
     expectGradient(pair, false, pair.data.bodyStates[0], "two bodies, the first");
     // The paper's law, its pressure at each contact's centre of pressure, is not this gradient.
-    pair.model.pressure.normal = NormalLaw::Pressure;
-    pair.model.pressure.regime = RegimeChoice::Exact;
+    pair.model.options.pressure.normal = NormalLaw::Pressure;
+    pair.model.options.pressure.regime = RegimeChoice::Exact;
     const Wrench pressure = pair.on(true), gradient = numericalGradient(pair, pair.data.bodyStates[1]);
     worstPressureMiss = std::max(worstPressureMiss, (pressure.force - gradient.force).norm() / gradient.force.norm());
   }
@@ -137,7 +137,7 @@ TEST(ContactEnergy, TheForceOnAWallAndOnASphereIsMinusTheEnergysGradient) {
   std::mt19937 random(9);
   for (const PartnerShape& shape : {PartnerShape(Wall{2, 1}), PartnerShape(Sphere{0.01})}) {
     Pair pair;
-    pair.model.pressure.normal = NormalLaw::Energy;
+    pair.model.options.pressure.normal = NormalLaw::Energy;
     pair.model.bodies = {roundedBody(0, spheroid(), kRubber)};
     pair.model.partners = {{1, shape, kRubber}};
     pair.data.resize(pair.model);
@@ -175,7 +175,7 @@ TEST(ContactEnergy, TheForceOverTheEdgeOfABoxOrAFacetIsMinusTheEnergysGradient) 
   for (const PartnerShape& shape : {PartnerShape(Box{Vector3r::Constant(half)}), PartnerShape(facet)}) {
     const bool box = std::holds_alternative<Box>(shape);
     Pair pair;
-    pair.model.pressure.normal = NormalLaw::Energy;
+    pair.model.options.pressure.normal = NormalLaw::Energy;
     pair.model.bodies = {roundedBody(0, spheroid(), kRubber)};
     pair.model.partners = {{1, shape, kRubber}};
     pair.data.resize(pair.model);

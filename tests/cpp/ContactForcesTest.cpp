@@ -6,7 +6,7 @@
 
 #include "pkg/engine/CriticalTimeStep.hpp"
 #include "pkg/engine/ContactStep.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 
 namespace roundedmesh {

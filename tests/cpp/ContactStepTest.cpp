@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "pkg/engine/ContactStep.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "tests/cpp/TestSupport.hpp"
 

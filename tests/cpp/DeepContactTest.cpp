@@ -13,7 +13,7 @@
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/ContactStep.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_RoundedMesh_PressureGeom.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "tests/cpp/TestSupport.hpp"
 

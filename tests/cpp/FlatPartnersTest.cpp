@@ -8,7 +8,7 @@
 
 #include "pkg/engine/PairEvaluation.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "tests/cpp/TestSupport.hpp"
 
@@ -22,7 +22,7 @@ const HertzMaterial kFloor{5e6, 0.4, 2000, 1e-3, 0};
 
 Wrench against(const BodyMesh& mesh, const BodyState& state, const PartnerShape& partner,
                const BodyState& partnerState = BodyState()) {
-  return partnerContact(roundedBody(0, mesh, kRubber), state, partner, partnerState, kFloor, PressureOptions()).onFirst;
+  return partnerContact(roundedBody(0, mesh, kRubber), state, partner, partnerState, kFloor, EngineOptions()).onFirst;
 }
 
 // A ball 1 mm into a Box whose top is z = 0, from 1 mm to 1 m thick, tilted and off-centre: the Wall's force in the

@@ -14,7 +14,7 @@
 #include "pkg/shape/Icosphere.hpp"
 #include "pkg/shape/MassProperties.hpp"
 #include "pkg/meshing/Spheroid.hpp"
-#include "pkg/shape/SurfaceRepair.hpp"
+#include "pkg/meshing/SurfaceRepair.hpp"
 
 namespace roundedmesh {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Cylinder.hpp"
 #include "pkg/shape/Icosphere.hpp"
 

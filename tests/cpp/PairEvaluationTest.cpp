@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "pkg/engine/PairEvaluation.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "tests/cpp/TestSupport.hpp"
 
@@ -20,7 +20,7 @@ TEST(PairEvaluation, PlaneContactIsTheEnginesStep) {
   const BodyMesh mesh(icosphere(0.025, 3));
   const BodyState state = at(Vector3r(0.001, 0.002, 0.024), Quaternionr(Eigen::AngleAxis<Real>(0.4, Vector3r::UnitX())));
   const Plane floor{Vector3r::Zero(), Vector3r::UnitZ()};
-  const PairEvaluation once = planeContact(roundedBody(0, mesh, kRubber), state, floor, kRubber, PressureOptions());
+  const PairEvaluation once = planeContact(roundedBody(0, mesh, kRubber), state, floor, kRubber, EngineOptions());
   ContactModel model;
   model.bodies.push_back(roundedBody(0, mesh, kRubber));
   model.partners.push_back({1, floor, kRubber});
@@ -40,8 +40,8 @@ TEST(PairEvaluation, BodyContactKeepsNewtonsThirdLawAndListsItsForces) {
   const BodyMesh mesh(icosphere(0.025, 2));
   const RoundedBody a = roundedBody(0, mesh, kRubber), b = roundedBody(1, mesh, kRubber);
   const BodyState sa = at(Vector3r::Zero()), sb = at(Vector3r(0.003, -0.002, 0.049), Quaternionr(0.9, 0.1, 0.3, 0.2).normalized());
-  const PairEvaluation ab = bodyContact(a, sa, b, sb, PressureOptions(), true);
-  const PairEvaluation ba = bodyContact(b, sb, a, sa, PressureOptions(), true);
+  const PairEvaluation ab = bodyContact(a, sa, b, sb, EngineOptions(), true);
+  const PairEvaluation ba = bodyContact(b, sb, a, sa, EngineOptions(), true);
   const Real scale = ab.onFirst.force.norm();
   ASSERT_GT(scale, 0.01);
   EXPECT_LT((ab.onFirst.force + ab.onSecond.force).norm(), 1e-12 * scale);
@@ -58,7 +58,7 @@ TEST(PairEvaluation, BadMaterialIsRefusedByName) {
   bad.young = -1;
   try {
     sphereContact(roundedBody(0, mesh, kRubber), at(Vector3r::Zero()), Sphere{0.01}, at(Vector3r(0, 0, 0.03)), bad,
-                  PressureOptions());
+                  EngineOptions());
     FAIL() << "a negative modulus was accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("young"), std::string::npos) << e.what();

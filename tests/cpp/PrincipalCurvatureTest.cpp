@@ -6,7 +6,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Cylinder.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "pkg/shape/PrincipalCurvature.hpp"

@@ -160,7 +160,7 @@ TEST_P(SpherePairFriction, OpposesTheSlipAndIsCappedByCoulomb) {
   for (Real speed : {1e-3, 10.0}) {
     const Vector3r v(speed, 0, 0), w(0, 0.3 * speed / r, 0);
     Scene scene;
-    scene.model.friction = GetParam();
+    scene.model.options.friction = GetParam();
     scene.add(Sphere{r}, ball, moving(Vector3r(0, 0, r - overlap), v, w), true);
     scene.add(Wall{2, 1}, floor, test::at(Vector3r::Zero()), false);
     scene.step();

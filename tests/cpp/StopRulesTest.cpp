@@ -10,7 +10,7 @@
 #include "pkg/engine/ContactStep.hpp"
 #include "pkg/engine/StopRules.hpp"
 #include "pkg/phys/HertzPhys.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "tests/cpp/TestSupport.hpp"
 
@@ -96,7 +96,7 @@ TEST(StopRules, AGrowingDeepOverlapStops) {
 
   Scene shallow(Wall{2, 1});
   for (Real overlap : {0.0, 0.1, 0.3, 0.45, 0.49}) EXPECT_TRUE(shallow.step(Vector3r(0, 0, kRadius - overlap * r)).empty());
-  shallow.model.stopOverlap = std::numeric_limits<Real>::infinity();
+  shallow.model.options.stopOverlap = std::numeric_limits<Real>::infinity();
   EXPECT_TRUE(shallow.step(Vector3r(0, 0, kRadius - 0.9 * r)).empty());
 }
 

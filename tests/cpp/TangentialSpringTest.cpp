@@ -11,7 +11,7 @@
 #include "pkg/engine/CriticalTimeStep.hpp"
 #include "pkg/engine/ContactStep.hpp"
 #include "pkg/law/TangentialSpring.hpp"
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "tests/cpp/TestSupport.hpp"
 
@@ -158,7 +158,7 @@ TEST(TangentialSpringInEngine, StiffnessIsMindlinsForAMeshedSphere) {
   ContactModel model;
   model.bodies.push_back(roundedBody(0, BodyMesh(icosphere(radius, 4)), kSoft));
   model.partners.push_back({1, Plane{Vector3r::Zero(), Vector3r::UnitZ()}, kHard});
-  model.pressure.regime = RegimeChoice::Direct;
+  model.options.pressure.regime = RegimeChoice::Direct;
   ContactData data;
   data.resize(model);
   data.timeStep = dt;
@@ -321,7 +321,7 @@ TEST(TangentialSpringInEngine, StabilityLimitHasTheTangentialContact) {
   EXPECT_NEAR(limit().timeStep, std::min(normal, spring), 1e-12 * normal);
   EXPECT_LT(spring, normal) << "c = 2 N s/m on a 4 g sphere is meant to set the limit";
   EXPECT_TRUE(limit().tangential);
-  model.friction = FrictionLaw::Viscous;
+  model.options.friction = FrictionLaw::Viscous;
   EXPECT_NEAR(limit().timeStep,
               std::min({normal, 2 * (m / 3.5) / wall.tangentialDamping, 2 * (m / 7) / same.tangentialDamping}),
               1e-12 * normal);

@@ -6,7 +6,7 @@
 #include <set>
 #include <utility>
 
-#include "pkg/bound/TriangleTree.hpp"
+#include "pkg/shape/TriangleTree.hpp"
 #include "pkg/shape/Icosphere.hpp"
 
 namespace roundedmesh {

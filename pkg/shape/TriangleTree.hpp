@@ -1,4 +1,4 @@
-// Bound: a static bounding-volume hierarchy over the triangles of one mesh, built once in the body frame
+// Part of a RoundedMesh: a static bounding-volume hierarchy over its triangles, built once in the body frame
 // (architecture.md). Triangle t's box holds its corners and its cap, the part of its encompassing sphere
 // beyond the triangle's plane where contact pressure acts: the corners' box inflated on every side by the
 // cap height R - sqrt(R^2 - rho^2) (rho the circumradius). A node's box holds its children's.

@@ -1,4 +1,4 @@
-#include "pkg/bound/TriangleTree.hpp"
+#include "pkg/shape/TriangleTree.hpp"
 
 #include <algorithm>
 #include <numeric>

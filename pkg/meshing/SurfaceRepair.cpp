@@ -1,4 +1,4 @@
-#include "pkg/shape/SurfaceRepair.hpp"
+#include "pkg/meshing/SurfaceRepair.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>

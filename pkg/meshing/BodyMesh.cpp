@@ -1,4 +1,4 @@
-#include "pkg/shape/BodyMesh.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -7,7 +7,7 @@
 #include "pkg/meshing/MeshPreparation.hpp"
 #include "pkg/shape/CapTolerance.hpp"
 #include "pkg/shape/Curvature.hpp"
-#include "pkg/shape/SurfaceRepair.hpp"
+#include "pkg/meshing/SurfaceRepair.hpp"
 
 namespace roundedmesh {
 namespace {

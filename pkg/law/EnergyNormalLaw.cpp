@@ -1,0 +1,23 @@
+// The energy law (doc/physics.md, "The energy law"): the elastic force is the exact gradient of the contact's
+// energy (ContactEnergyGradient.hpp), so that it does no work round a closed path; the damping, the rest of the
+// pressure, acts as the paper's (node forces, Eq. 15).
+#include "pkg/law/HertzPressure.hpp"
+#include "pkg/law/NormalLaws.hpp"
+
+namespace roundedmesh {
+
+void energyNormalLaw(const TriangleLoad& contact, Wrench& onBody) {
+  const PressureGeom& geom = contact.geom;
+  const NormalLoad& load = contact.load;
+  const NormalLoad damping{load.force - load.elasticForce, load.moment - load.elasticMoment, load.regime};
+  addNodeForcesToBody(contact.corners, nodeForces(geom.nodes, damping), geom.normal, onBody);
+  const EnergyForces elastic =
+      contactEnergyGradient(geom, load.elasticForce, hertzEnergyAmplitude(contact.phys, geom.radius), contact.corners,
+                            contact.sphereCentre, contact.partner);
+  for (int k = 0; k < elastic.count; ++k) {
+    onBody.force -= elastic.onBody2[k].force;
+    onBody.torque -= elastic.onBody2[k].point.cross(elastic.onBody2[k].force);
+  }
+}
+
+}  // namespace roundedmesh
