@@ -207,14 +207,13 @@ def main_process(args):
             if subprocess.run(child_command(args, run, check=False), env=environment).returncode:
                 raise SystemExit(f"s1_packing.py: the run {run} failed (its output so far is in "
                                  f"{os.path.join(args.output, run)})")
-    import s1_figures  # noqa: E402  (scripts/studies/s1_figures.py: matplotlib and YADE only now, after the runs)
+    from roundedmesh_study import s1_figures  # matplotlib and YADE only now, after the runs
     s1_figures.make_all(args.output, RADIUS, SUBMERGED_HEIGHT)
 
 
 if __name__ == "__main__":
     ARGS = parse(sys.argv[1:])
     if not ARGS.run:
-        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "studies"))
         main_process(ARGS)
         raise SystemExit(0)
 

@@ -34,6 +34,7 @@ from yade.minieigenHP import Vector3  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.export import write_csv  # noqa: E402
+
 from .benchmarking import machine  # noqa: E402
 from .deep_monotonicity import random_orientations  # noqa: E402
 from .hard_cases import box_arrays  # noqa: E402

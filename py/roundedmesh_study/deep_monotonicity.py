@@ -35,6 +35,7 @@ import numpy as np  # noqa: E402
 from yade.minieigenHP import Quaternion  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
+
 from .benchmarking import machine  # noqa: E402
 
 RUBBER = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000)

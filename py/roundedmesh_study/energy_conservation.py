@@ -55,6 +55,7 @@ from yade import ForceResetter, NewtonIntegrator, O, PyRunner  # noqa: E402
 from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
+
 from .analytic import effective_modulus  # noqa: E402
 from .benchmarking import machine  # noqa: E402
 

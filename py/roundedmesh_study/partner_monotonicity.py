@@ -30,6 +30,7 @@ import numpy as np  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.export import write_csv  # noqa: E402
+
 from .benchmarking import machine  # noqa: E402
 from yade import utils  # noqa: E402
 from yade.minieigenHP import Quaternion, Vector3  # noqa: E402

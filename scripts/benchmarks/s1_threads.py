@@ -13,18 +13,14 @@ for a busy core at every barrier make a step many times slower.
 """
 import argparse
 import csv
-import importlib.util
 import os
 import shlex
 import shutil
 import subprocess
 import sys
 
-SCRIPTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir)
-_spec = importlib.util.spec_from_file_location("s1_figures", os.path.join(SCRIPTS, "studies", "s1_figures.py"))
-_figures = importlib.util.module_from_spec(_spec)   # the runs' names and their CSV reader
-_spec.loader.exec_module(_figures)
-ORDER, read_csv = _figures.ORDER, _figures.read_csv
+from roundedmesh_study import SCRIPTS
+from roundedmesh_study.s1_figures import ORDER, read_csv
 
 CHECKPOINT = "checkpoint.yade.gz"
 

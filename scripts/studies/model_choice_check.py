@@ -22,7 +22,7 @@ def main(argv=None):
     parser.add_argument("--targets", type=float, nargs="+", default=[0.01, 0.05, 0.2])
     parser.add_argument("--statistic", default="median", choices=POSE_STATISTICS)
     parser.add_argument("--shapes", nargs="+", default=list(SHAPES), choices=SHAPES)
-    parser.add_argument("--quick", action="store_true", help="3 poses, the 5 % target only")
+    parser.add_argument("--quick", action="store_true", help="3 poses, the 5 %% target only")
     parser.add_argument("--table", default=None, help="the model table (default the package's model_table.json)")
     parser.add_argument("--output", default=os.path.join("out", "model_choice_check"))
     args = parser.parse_args(argv)

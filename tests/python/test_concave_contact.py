@@ -13,17 +13,10 @@ they must become plain tests. Where Hertz does not hold (the neck, the belly wit
 principal model's force is finite and does not decrease over the quick sweep is asserted
 (test_principal_where_hertz_does_not_hold).
 """
-import importlib.util
-import os
-
 import numpy as np
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-_spec = importlib.util.spec_from_file_location(
-    "validate_concave_contact", os.path.join(ROOT, "scripts", "validation", "validate_concave_contact.py"))
-concave = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(concave)
+from roundedmesh_study import concave_contact as concave
 
 # The issue's target. Its budget on the 2000-node mesh, where the principal model meets it (F/F_hertz = 1.033 at
 # r = 2 mm, 1.035 at 10 mm): the force starts 0.006 mm before the sphere reaches the smooth surface (the caps,

@@ -1,10 +1,9 @@
-"""scripts/examples/example_drum.py, scene S7 of doc/scenes.md: the drum of Facets the script makes (24 panels, two
-end caps, 4 lifters), the lattice it starts the placement from, the scene it builds for roundedmesh and for YADE's
+"""scripts/examples/example_drum.py, scene S7 of doc/scenes.md (roundedmesh_study.drum): the drum of Facets it makes
+(24 panels, two end caps, 4 lifters), the lattice it starts the placement from, the scene it builds for roundedmesh and for YADE's
 clumps, the drum turned by RotationEngine in the ParaView export, and a short run from the shipped placement (no pair
 deeper than START_OVERLAP at the start): nothing leaves the drum, every output is written and the frames hold the
 Facets."""
 import csv
-import importlib.util
 import json
 import math
 import os
@@ -17,18 +16,16 @@ import pytest
 from yade import O, RotationEngine
 
 import roundedmesh as rm
+from roundedmesh_study import drum
 from test_export import read_piece, rotation
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir)
 SCRIPT = os.path.join(ROOT, "scripts", "examples", "example_drum.py")
-_spec = importlib.util.spec_from_file_location("example_drum", SCRIPT)
-drum = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(drum)  # no side effects: main() runs only as a script
 
 RADIUS, LENGTH = 0.15, 0.12  # S7's drum [m]
 
 
-def test_importing_the_script_does_nothing():
+def test_importing_the_module_does_nothing():
     assert len(O.bodies) == 0 and O.iter == 0 and callable(drum.main)
 
 

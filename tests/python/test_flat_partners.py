@@ -103,17 +103,11 @@ def test_partner_contact_names_a_body_that_cannot_be_a_partner(meshes):
 
 @pytest.mark.slow
 def test_a_bear_dropped_on_a_box_lands_and_rests():
-    """scripts/validation/validate_resting_on_partners.py's scene, three orientations, 2 s: the bear falls 5 mm onto a
+    """roundedmesh_study.resting_on_partners' scene (scripts/validation/validate_resting_on_partners.py), three orientations, 2 s: the bear falls 5 mm onto a
     Box 0.1 m thick, tumbles, and comes to rest on it (within 1.5 s in every orientation of the script's 20), the run
     never stops (it used to stop within 263-853 steps on a phantom overlap of the Box's bottom face), and the Box
     carries the bear's weight to 1e-6 (at rest, the bear's speed is below 1e-12 m/s by then)."""
-    import importlib.util
-    import os
-    path = os.path.join(os.path.dirname(__file__), os.pardir, os.pardir, "scripts", "validation",
-                        "validate_resting_on_partners.py")
-    spec = importlib.util.spec_from_file_location("validate_resting_on_partners", path)
-    resting = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(resting)
+    from roundedmesh_study import resting_on_partners as resting
     for ori in resting.random_orientations(3):
         bear, (box,) = resting.build("box", ori)
         O.run(int(2.0 / O.dt), True)

@@ -1,8 +1,7 @@
 """Model only what a scene needs (issue 14, doc/speed-vs-error.md): roundedmesh.model_choice.cheapest_model against an
-independent pass over the study's data file, the table it reads against that data, its refusals, and scripts/studies/speed_vs_error_report.py on tiny
-errors.csv and costs.csv files (no YADE run)."""
+independent pass over the study's data file, the table it reads against that data, its refusals, and the study's
+report (roundedmesh_study.speed_vs_error_report) on tiny errors.csv and costs.csv files (no YADE run)."""
 import csv
-import importlib.util
 import json
 import math
 import os
@@ -16,9 +15,9 @@ import pytest
 import roundedmesh as rm
 from roundedmesh import model_choice
 from roundedmesh_study import model_table
+from roundedmesh_study import speed_vs_error_report as report
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir)
-REPORT = os.path.join(ROOT, "scripts", "studies", "speed_vs_error_report.py")
 TARGETS = (0.005, 0.01, 0.02, 0.05, 0.2, 0.5)
 
 
@@ -218,14 +217,6 @@ def test_add_body_with_an_error_gets_the_chosen_mesh_and_warns_of_other_engine_o
     assert len(O.bodies) == count      # bad input leaves the scene as it was
 
 
-def load_report():
-    """scripts/studies/speed_vs_error_report.py as a module, to run its main() in this process."""
-    spec = importlib.util.spec_from_file_location("speed_vs_error_report", REPORT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
 ERRORS = [  # shape, family, configuration, size, plane median, plane worst, copy median, copy worst [%]
     ("sphere", "roundedmesh", "curvature computed, auto", 42, 0.5, 1.0, 0.6, 1.2),
     ("sphere", "roundedmesh", "curvature computed, auto", 162, 0.1, 0.3, 0.2, 0.4),
@@ -287,7 +278,6 @@ def write_fixtures(folder):
 
 
 def test_the_report_reads_the_roundedmesh_labels():
-    report = load_report()
     assert report.parse_configuration("curvature computed, exact") == ("computed", "exact", "mean", "pressure")
     assert (report.parse_configuration("curvature prescribed, auto, principal, energy")
             == ("prescribed", "auto", "principal", "energy"))
@@ -311,7 +301,6 @@ def test_the_report_joins_errors_and_costs(tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(model_choice, "mesh_resolution", lambda mesh: {"median": mesh[1] / 1000,
                                                                        "worst": mesh[1] / 500}, raising=False)
     write_fixtures(tmp_path)
-    report = load_report()
     report.main(["--input", str(tmp_path), "--output", str(tmp_path / "report"), "--costs",
                  str(tmp_path / "costs.csv"), str(tmp_path / "grains" / "costs.csv"), str(tmp_path / "none.csv")])
     assert "no costs file " + str(tmp_path / "none.csv") in capsys.readouterr().err   # named, and skipped

@@ -1,19 +1,13 @@
-"""Scene S6 (paper Section 3.3, Fig. 9; scripts/validation/validate_pear_compression.py): the pear of shapes.json,
+"""Scene S6 (paper Section 3.3, Fig. 9; roundedmesh_study.pear_compression, scripts/validation/
+validate_pear_compression.py): the pear of shapes.json,
 70 mm high, pressed by a rigid plate, against Hertz's solution at the smooth shape's local principal radii."""
-import importlib.util
-import os
-
 import numpy as np
 
 from roundedmesh_study import hertz_reference as hr
+from roundedmesh_study import pear_compression as s6
 from roundedmesh_study.analytic import effective_modulus, nrmse
 from roundedmesh_study.shape_error import rounded_mesh
 
-SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir, "scripts", "validation",
-                      "validate_pear_compression.py")
-spec = importlib.util.spec_from_file_location("validate_pear_compression", SCRIPT)
-s6 = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(s6)
 
 
 # The issue's bound: within 2 % (NRMSE) at the paper's node count (486) with the curvature computed from the mesh, for

@@ -1,10 +1,9 @@
 """The error axis of the speed-against-error study (issue 14, doc/speed-vs-error.md): Hertz's reference at a smooth
 shape's contact point (roundedmesh_study.hertz_reference), the pressing of YADE's representations
-(roundedmesh_study.shape_error), and scripts/studies/speed_vs_error.py --quick --costs --report end to end; the S1
-packing of a study grain and its costs (bench_shaken_bears.py and record_s1_scene.py with --shape,
-speed_vs_error_costs.py --shapes)."""
+(roundedmesh_study.shape_error), and the study's quick form end to end (roundedmesh_study.speed_vs_error, its costs
+and its report); the S1 packing of a study grain and its costs (bench_shaken_bears.py and record_s1_scene.py with
+--shape, speed_vs_error_costs.py --shapes)."""
 import csv
-import importlib.util
 import math
 import os
 import subprocess
@@ -13,13 +12,13 @@ import numpy as np
 import pytest
 
 from roundedmesh import shapes
-from roundedmesh_study import analytic, peers
+from roundedmesh_study import analytic, bench_s1_peers, peers, speed_vs_error, speed_vs_error_costs
+from roundedmesh_study import speed_vs_error_report
 from roundedmesh_study import hertz_reference as hr
 from roundedmesh_study import shape_error as se
 from roundedmesh_study.validation import pair_poses
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir)
-SCRIPT = os.path.join(ROOT, "scripts", "studies", "speed_vs_error.py")
 COSTS = os.path.join(ROOT, "scripts", "studies", "speed_vs_error_costs.py")
 BENCHMARKS = os.path.join(ROOT, "scripts", "benchmarks")
 MODULUS = 1.0e6
@@ -224,16 +223,16 @@ def test_every_representation_stands_where_the_smooth_shape_does():
     assert np.linalg.norm(points[0] - points[1]) * peers.body_frame("gummy_bear")[1] < 1e-3 * se.RADIUS
 
 
-# --- the script ---------------------------------------------------------------------------------------------
+# --- the study's quick form -------------------------------------------------------------------------------
 
 @pytest.mark.slow
 def test_quick_study_runs_and_writes_the_table(tmp_path):
-    # the whole study in one run on one shape of each kind (a sphere, a blend of spheres, a grain): errors, S1 costs
-    # (speed_vs_error_costs.py --quick, the bear's) and the report
+    # the whole study on one shape of each kind (a sphere, a blend of spheres, a grain): errors, S1 costs (--quick,
+    # the bear's) and the report, as scripts/studies/speed_vs_error.py --quick --costs --report runs them
     shapes = ("sphere", "gummy_bear", "spheroid")
-    out = subprocess.run(["/usr/bin/python3", SCRIPT, "--quick", "--shapes", *shapes, "--costs", "--report",
-                          "--output", str(tmp_path)], capture_output=True, text=True, env=os.environ)
-    assert out.returncode == 0, out.stdout + out.stderr
+    assert not speed_vs_error.main(["--quick", "--shapes", *shapes, "--output", str(tmp_path)])
+    assert not speed_vs_error_costs.main(["--quick", "--output", str(tmp_path)])
+    assert not speed_vs_error_report.main(["--input", str(tmp_path), "--output", str(tmp_path)])
     with open(tmp_path / "errors.csv", newline="") as f:
         rows = list(csv.DictReader(f))
     keys = {(r["shape"], r["family"], r["partner"]) for r in rows}
@@ -263,14 +262,6 @@ def test_quick_study_runs_and_writes_the_table(tmp_path):
     assert (tmp_path / "guide_summary.md").read_text().count("spheroid") >= 1
 
 
-def _bench_s1_peers():
-    """scripts/benchmarks/bench_s1_peers.py as a module (imported, it does not restart itself)."""
-    spec = importlib.util.spec_from_file_location("bench_s1_peers", os.path.join(BENCHMARKS, "bench_s1_peers.py"))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
 @pytest.mark.slow
 def test_a_grain_settles_into_s1_and_its_packing_is_written_as_the_peers_read_it(tmp_path):
     """bench_shaken_bears.py --shape then record_s1_scene.py, on 4 pills for 20 steps (seconds): the packing alone,
@@ -295,25 +286,21 @@ def test_a_grain_settles_into_s1_and_its_packing_is_written_as_the_peers_read_it
     with open(tmp_path / "s1_settled_pill.csv", newline="") as f:
         shapes = [row["shape"] for row in csv.DictReader(line for line in f if not line.startswith("#"))]
     assert shapes[:4] == ["pill"] * 4 and all(s.startswith("wall") for s in shapes[4:]) and len(shapes) == 9
-    peers_script = _bench_s1_peers()
-    poses = peers_script.read_poses(str(tmp_path / "s1_settled_pill.csv"), "pill")
+    poses = bench_s1_peers.read_poses(str(tmp_path / "s1_settled_pill.csv"), "pill")
     assert len(poses) == 4 and all(0 < p[0][2] < 0.1 for p in poses)   # the lowest layer, still in the air
     with pytest.raises(SystemExit):
-        peers_script.read_poses(str(tmp_path / "s1_settled_pill.csv"), "gummy_bear")
-    assert peers_script.default_poses("pill") == os.path.join("bench", "data", "s1_settled_pill.csv")
+        bench_s1_peers.read_poses(str(tmp_path / "s1_settled_pill.csv"), "gummy_bear")
+    assert bench_s1_peers.default_poses("pill") == os.path.join("bench", "data", "s1_settled_pill.csv")
 
 
 def test_costs_leave_out_a_configuration_whose_packing_blew_up():
     """speed_vs_error_costs.blown_up on bench_s1_peers.py's rows: the grains' 160-sphere clumps (bodies at 2e25 m/s,
     no touching pair left) and a packing that lost most of its contacts are left out; a settled one is kept."""
-    spec = importlib.util.spec_from_file_location("speed_vs_error_costs", COSTS)
-    costs = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(costs)
     row = {"largest_speed": "0.0535", "touching_body_pairs_after_warmup": "963", "touching_body_pairs": "1006"}
-    assert costs.blown_up(row) is None
-    assert "2.21e+25 m/s" in costs.blown_up({**row, "largest_speed": "2.21e+25", "touching_body_pairs": "0"})
-    assert "blew up" in costs.blown_up({**row, "largest_speed": "nan"})
-    assert "963 after the warm-up, 400 at the end" in costs.blown_up({**row, "touching_body_pairs": "400"})
+    assert speed_vs_error_costs.blown_up(row) is None
+    assert "2.21e+25 m/s" in speed_vs_error_costs.blown_up({**row, "largest_speed": "2.21e+25", "touching_body_pairs": "0"})
+    assert "blew up" in speed_vs_error_costs.blown_up({**row, "largest_speed": "nan"})
+    assert "963 after the warm-up, 400 at the end" in speed_vs_error_costs.blown_up({**row, "touching_body_pairs": "400"})
 
 
 @pytest.mark.slow
