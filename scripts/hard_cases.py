@@ -1,6 +1,4 @@
-"""Scene S8 of doc/scenes.md: the hard cases every contact change must pass (S1 through the shaking, the drum S7,
-bodies pressed to half a radius, coarse meshes, undamped collisions), run and reported pass or fail with the figure
-each one is judged by.
+"""Scene S8 of doc/scenes.md: the hard cases every contact change must pass, pass or fail.
 
     /usr/bin/python3 scripts/hard_cases.py [--quick] [--only s1 drum pressed coarse collisions]
         [--shapes gummy_bear pear ...] [--seeds 1 2 3 4 5] [--threads 2] [--orientations 200] [--output out/hard_cases]

@@ -3,12 +3,7 @@ process: as roundedmesh's rounded bodies, and as YADE's own representations, clu
 and plain spheres of the volume-equivalent radius, each with YADE's Hertz-Mindlin law (roundedmesh_study.peers). The
 figures our engine's speed is stated against.
 
-    /usr/bin/python3 scripts/benchmarks/bench_s1_peers.py [--shape gummy_bear] [--poses bench/data/s1_settled.csv]
-        [--peers roundedmesh clumps spheres [levelset] [roundedmesh-principal]] [--nodes N] [--regime auto]
-        [--count 40]
-        [--spacing 1e-3] [--surface-nodes 511]
-        [--level-set-verlet 0] [--warmup 100] [--blocks 5] [--block-steps 200] [--min-block-seconds 2]
-        [--output out/bench_s1_peers/peers.csv]
+    scripts/benchmarks/bench_s1_peers.py runs it (its docstring has the options).
 
 One process, one thread (the script restarts itself with OMP_NUM_THREADS=1 if that is not set), one
 representation after the other: build at the poses (O is reset), run --warmup steps, then time --blocks blocks

@@ -1,7 +1,4 @@
-"""Whole-step cost of the gummy bear in scene S1 (doc/scenes.md) at the poses of a settled packing, timed in one
-process: as roundedmesh's rounded bodies, and as YADE's own representations, clumps of spheres, level-set bodies
-and plain spheres of the volume-equivalent radius, each with YADE's Hertz-Mindlin law (roundedmesh_study.peers). The
-figures our engine's speed is stated against.
+"""Whole-step cost of scene S1 as roundedmesh bodies and as YADE's own representations.
 
     /usr/bin/python3 scripts/benchmarks/bench_s1_peers.py [--shape gummy_bear] [--poses bench/data/s1_settled.csv]
         [--peers roundedmesh clumps spheres [levelset] [roundedmesh-principal]] [--nodes N] [--regime auto]

@@ -1,7 +1,4 @@
-"""Speed against error, the cost axis (issue 14; doc/speed-vs-error.md): milliseconds per step of scene S1's settled
-packing of 250 gummy bears (bench/data/s1_settled.csv, doc/scenes.md) for each configuration of the error study
-that scripts/studies/speed_vs_error.py measures for the gummy bear, timed by one harness,
-scripts/benchmarks/bench_s1_peers.py, one configuration after the other, each in its own process on one thread.
+"""Speed against error, the cost axis (issue 14; doc/speed-vs-error.md).
 
     /usr/bin/python3 scripts/studies/speed_vs_error_costs.py [--quick] [--output out/speed_vs_error]
         [--shapes gummy_bear [spheroid pill tetra_grain]] [--poses-folder bench/data]

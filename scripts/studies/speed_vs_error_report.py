@@ -1,7 +1,4 @@
-"""Speed against error, the report (issues 14 and 27; doc/speed-vs-error.md): the error axis (errors.csv of
-scripts/studies/speed_vs_error.py) joined with the cost axis (costs.csv of scripts/studies/speed_vs_error_costs.py)
-for every shape of the study, the Pareto front of error against cost where a shape has costs, and which
-configuration is the cheapest for a target error.
+"""Speed against error, the report (issues 14 and 27; doc/speed-vs-error.md).
 
     /usr/bin/python3 scripts/studies/speed_vs_error_report.py [--input out/speed_vs_error]
         [--costs PATH [PATH ...]] [--output out/speed_vs_error] [--package-data]

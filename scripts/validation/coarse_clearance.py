@@ -1,5 +1,4 @@
-"""Do coarse meshes push from a distance? Two copies of a coarse mesh, turned at random, 1 mm apart along the line of
-their centres, must feel no force (doc/validation.md, "Coarse meshes"; issue 24).
+"""Do coarse meshes push from a distance? (doc/validation.md, "Coarse meshes"; issue 24)
 
     /usr/bin/python3 scripts/validation/coarse_clearance.py [--orientations 200] [--gap 1e-3] [--seed 1]
         [--tolerance 0.05] [--output out/coarse_clearance]

@@ -1,5 +1,4 @@
-"""Is the contact force of two gummy bears monotone in their overlap, up to half a volume-equivalent radius, in
-any orientation? (doc/validation.md, "Deep overlaps"; issue 12, group 2.)
+"""Is the force of two gummy bears monotone in their overlap up to half a radius? (issue 12, group 2)
 
     /usr/bin/python3 scripts/validation/deep_monotonicity.py [--orientations 200] [--seed 1] [--volume] [--output DIR]
 

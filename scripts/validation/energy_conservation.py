@@ -1,4 +1,4 @@
-"""Is the contact force conservative? Issue 12, group 1: the measurements (the model is not changed here).
+"""Is the contact force conservative? (issue 12, group 1)
 
     /usr/bin/python3 scripts/validation/energy_conservation.py [--quick] [--output out/energy] [--only loops collisions]
 

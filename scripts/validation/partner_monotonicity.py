@@ -1,6 +1,4 @@
-"""Does a rounded body pressed into a flat partner always push back harder the deeper it goes? (scene S8 of
-doc/scenes.md: a bear on a Wall, a Facet and a Box pressed from first touch to 0.5 r_eq along random directions at
-200 random orientations; doc/validation.md, "Flat partners".)
+"""Does a body pressed into a flat partner push back harder the deeper it goes? (scene S8)
 
     /usr/bin/python3 scripts/validation/partner_monotonicity.py [--orientations 200] [--shape gummy_bear] [--seed 1]
                                                                 [--output out/partner_monotonicity]

@@ -1,5 +1,4 @@
-"""Analytic spheres pressed into the gummy bear's concave grooves, against Hertz's elliptical solution at the smooth
-shape's groove point.
+"""Spheres pressed into the gummy bear's concave grooves, against Hertz's elliptical solution.
 
     /usr/bin/python3 scripts/validation/validate_concave_contact.py [--curvature both|mean|principal]
                                                                     [--mesh-curvature both|computed|exact] [--quick]

@@ -1,6 +1,4 @@
-"""Scene S6 (paper Section 3.3, Fig. 9): the pear of shapes.json, scaled to 70 mm high, pressed by a rigid flat plate
-at a point where its two principal radii differ (ratio about 1.6, as at the contact of the paper's printed pear),
-force against indentation beside Hertz's solution for the local principal curvatures of the smooth shape.
+"""Scene S6 (paper Section 3.3, Fig. 9): the pear pressed by a rigid plate, against Hertz.
 
     /usr/bin/python3 scripts/validation/validate_pear_compression.py [--nodes 486 1000 2200] [--ratio 1.6]
         [--orientations 400] [--seed 1] [--output out/validation]
