@@ -15,25 +15,10 @@
 #include <unordered_map>
 #include <vector>
 
+#include "pkg/io/TextTokens.hpp"
+
 namespace roundedmesh {
 namespace {
-
-// A token as a message shows it: quoted, at most 24 characters, bytes that are not printable ASCII as \xNN.
-std::string shown(std::string_view token) {
-  std::string text = "'";
-  const std::size_t length = std::min<std::size_t>(token.size(), 24);
-  for (std::size_t i = 0; i < length; ++i) {
-    const auto c = static_cast<unsigned char>(token[i]);
-    if (c >= 0x20 && c < 0x7f) {
-      text += char(c);
-    } else {
-      char escaped[5];
-      std::snprintf(escaped, sizeof escaped, "\\x%02X", unsigned(c));
-      text += escaped;
-    }
-  }
-  return text + (token.size() > length ? "...'" : "'");
-}
 
 std::string counted(std::uint64_t count, const char* singular, const char* plural) {
   return std::to_string(count) + " " + (count == 1 ? singular : plural);
@@ -45,20 +30,6 @@ bool parseCount(std::string_view token, std::uint64_t& value) {
     return false;
   const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
   return error == std::errc() && end == token.data() + token.size();
-}
-
-enum class Parsed { number, notANumber, outOfRange };
-
-// A coordinate as strtod (libgts's reader) takes it, but independent of the locale: an optional sign, decimal
-// or scientific notation; "nan" and "inf" are numbers here and refused as non-finite by the caller.
-Parsed parseReal(std::string_view token, double& value) {
-  const char* begin = token.data();
-  const char* const end = begin + token.size();
-  if (begin != end && *begin == '+' && end - begin > 1 && begin[1] != '-' && begin[1] != '+') ++begin;
-  const auto [stop, error] = std::from_chars(begin, end, value, std::chars_format::general);
-  if (error == std::errc::invalid_argument || stop != end) return Parsed::notANumber;
-  if (error == std::errc::result_out_of_range) return Parsed::outOfRange;
-  return error == std::errc() ? Parsed::number : Parsed::notANumber;
 }
 
 // The file's lines that hold something once comments ('#' to the end of the line) are removed, as tokens, with

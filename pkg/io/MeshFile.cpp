@@ -11,11 +11,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <new>
 #include <sstream>
 #include <vector>
 
 #include "pkg/io/GtsFile.hpp"
+#include "pkg/io/TextTokens.hpp"
 #include "pkg/meshing/SurfaceRepair.hpp"
 
 namespace roundedmesh {
@@ -192,6 +194,47 @@ bool readOff(std::istream& in, std::uintmax_t fileSize, std::vector<Point>& poin
   return !in.fail();
 }
 
+// The first vertex of a text OBJ, STL or OFF file with a coordinate that is not a finite number ('nan', 'inf'):
+// CGAL's readers stop there without saying where, so a file they could not read is searched for it and the line
+// named, as the GTS reader names it. Nothing is thrown if no vertex has one (the file is broken otherwise).
+// Vertices are the 'v' lines of OBJ, the 'vertex' lines of STL, and in OFF the lines after the header and the
+// counts ('#' starts a comment in OBJ and OFF).
+void requireFiniteTextVertices(const std::string& path, const std::string& kind) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::uint64_t vertex = 0, offVertices = 0;
+  int offLines = 0;  // OFF's lines that hold something: the header, the counts (on it or the next), the vertices
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (kind != "stl") line = line.substr(0, line.find('#'));
+    std::istringstream words(line);
+    const std::vector<std::string> tokens{std::istream_iterator<std::string>(words), {}};
+    if (tokens.empty()) continue;
+    std::size_t first = 1;
+    if (kind == "off") {
+      ++offLines;
+      const bool header = offLines == 1 && tokens[0].find("OFF") != std::string::npos;
+      if (header && tokens.size() > 1) ++offLines;  // the counts follow on the header's line
+      if (offLines <= 2) {
+        double count = 0;
+        const std::string& counts = header ? (tokens.size() > 1 ? tokens[1] : std::string()) : tokens[0];
+        if (!counts.empty() && parseReal(counts, count) == Parsed::number && count >= 0) offVertices = count;
+        continue;
+      }
+      if (vertex >= offVertices) return;
+      first = 0;
+    } else if (tokens[0] != (kind == "obj" ? "v" : "vertex")) {
+      continue;
+    }
+    ++vertex;
+    for (std::size_t k = first; k < std::min(tokens.size(), first + 3); ++k) {
+      double value = 0;
+      if (parseReal(tokens[k], value) == Parsed::number && !std::isfinite(value))
+        throw std::invalid_argument(path + ": line " + std::to_string(number) + ": vertex " + std::to_string(vertex) +
+                                    " has a non-finite coordinate " + shown(tokens[k]));
+    }
+  }
+}
+
 // OBJ, STL, OFF or PLY through CGAL's readers (with the checks above), unscaled and not yet repaired.
 PolygonSoup readWithCgal(const std::string& path, const std::string& kind) {
   std::error_code error;
@@ -216,6 +259,7 @@ PolygonSoup readWithCgal(const std::string& path, const std::string& kind) {
   } catch (const std::bad_alloc&) {
     read = false;
   }
+  if (!read && kind != "ply") requireFiniteTextVertices(path, kind);
   if (!read)
     throw std::invalid_argument(path + ": cannot be read as " + kind +
                                 " (truncated, corrupt, or not a mesh file of that format)");

@@ -151,6 +151,9 @@ def main():
     broken = VERTICES.copy()
     broken[3, 1] = np.nan
     write_ply("nan.ply", broken, TRIANGLES, binary=True)
+    write_obj("nan.obj", broken, TRIANGLES, "octahedron with a NaN coordinate in vertex 4")
+    write_off("nan.off", broken, TRIANGLES)
+    write_ascii_stl("nan_ascii.stl", broken, TRIANGLES)
     write_off("opposite_parts.off", np.vstack([VERTICES, VERTICES + [5, 0, 0]]),
               np.vstack([TRIANGLES, TRIANGLES[:, ::-1] + 6]))
     write_obj("collapsed_face.obj", np.vstack([VERTICES, VERTICES[0], VERTICES[2]]),
