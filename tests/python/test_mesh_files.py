@@ -191,7 +191,7 @@ def test_quads_are_triangulated():
     # file lists each facet's corners: its vertex 8 is facet 3's second).
     ("nan.obj", r"nan\.obj: line 5: vertex 4 has a non-finite coordinate 'nan'"),
     ("nan.off", r"nan\.off: line 6: vertex 4 has a non-finite coordinate 'nan'"),
-    ("nan_ascii.stl", r"nan_ascii\.stl: line 19: vertex 4 has a non-finite coordinate 'nan'"),
+    ("nan_ascii.stl", r"nan_ascii\.stl: line 19: vertex 8 has a non-finite coordinate 'nan'"),
     ("empty.stl", r"empty\.stl: the file is empty"),
     ("truncated.stl", r"truncated\.stl: cannot be read as stl \(truncated, corrupt"),
     ("not_a_mesh.off", r"not_a_mesh\.off: cannot be read as off"),
