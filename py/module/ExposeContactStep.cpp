@@ -202,6 +202,7 @@ class SceneContacts {
     s["write_ms"] = writeMs_;
     s["deepest_pair_overlap"] = deepest_.overlap;
     s["deepest_pair_fraction"] = deepest_.overlap / deepest_.size;
+    s["threads"] = model_.options.resolvedThreads();
     return s;
   }
 

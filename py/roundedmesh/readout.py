@@ -34,7 +34,7 @@ _STATISTICS = ("body_pairs", "touching_pairs", "candidates", "rejected_not_facin
                "rejected_through_body",
                "quadrature_contacts", "direct_contacts", "exact_contacts", "sphere_contacts", "sliding_contacts", "neighbour_rebuilds",
                "candidate_rebuilds", "near_rebuilds", "broad_phase_ms", "pairs_ms", "reduction_ms", "read_ms",
-               "write_ms", "deepest_pair_overlap", "deepest_pair_fraction")
+               "write_ms", "deepest_pair_overlap", "deepest_pair_fraction", "threads")
 
 
 def statistics():
@@ -63,6 +63,8 @@ def statistics():
       deepest_pair_overlap     the overlap [m] of the pair that overlaps most for its size (contacts()['depth'])
       deepest_pair_fraction    that overlap over the smaller side's size (r_eq, or a sphere's radius): what the stop
                                rule compares with stop_overlap
+      threads                  the OpenMP threads the step runs on: rm.engine(threads=...), else OMP_NUM_THREADS
+                               where set (yade -jN sets it), else one
     """
     state = _current_state()
     return state.contacts.statistics if state else dict.fromkeys(_STATISTICS, 0)

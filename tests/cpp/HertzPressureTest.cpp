@@ -66,5 +66,35 @@ TEST(HertzPressure, NeverPulls) {
   EXPECT_EQ(p.totalForce(), 0);
 }
 
+// The stiffness and energy helpers against Hertz's closed forms: F = (4/3) E* sqrt(R*) delta^3/2 (Eq. 7, undamped)
+// has dF/d(delta) = 2 E* sqrt(R* delta), and stores (2/5) F delta, which the energy density k (a^2 - r^2)^3/2 must
+// integrate to over the circle (by the same independent radial quadrature as above, with the density in place of
+// p). 1e-12 relative: each side is computed to round-off.
+TEST(HertzPressure, StiffnessAndEnergyAmplitudeAreHertzs) {
+  const HertzPhys phys{2.5e6, 0};
+  const Real R = 0.0125, delta = 4e-4;
+  const Real force = eq7(phys.effectiveModulus, R, delta, 0, 0);
+  const Real closedForm = 2 * phys.effectiveModulus * std::sqrt(R * delta);
+  EXPECT_NEAR(hertzStiffness(force, delta), closedForm, 1e-12 * closedForm);
+  EXPECT_NEAR(hertzStiffnessAt(phys, R, delta), closedForm, 1e-12 * closedForm);
+  const Real k = hertzEnergyAmplitude(phys, R);
+  // k (a^2 - r^2)^3/2 = (k a) (a^2 - r^2) sqrt(a^2 - r^2) = p(r) with amplitude k (a^2 - r^2), integrated as p is.
+  const Real a2 = R * delta;
+  const Real energy = integrateOverCircle(HertzPressure{k, a2}) * a2 -
+                      [&] {  // the r^2 part: the integral of k r^2 sqrt(a^2 - r^2) over the circle
+                        std::vector<Real> x, w;
+                        test::gaussLegendre(40, x, w);
+                        Real sum = 0;
+                        for (size_t i = 0; i < x.size(); ++i) {
+                          const Real theta = M_PI / 4 * (x[i] + 1), r = std::sqrt(a2) * std::sin(theta);
+                          sum += w[i] * M_PI / 4 * 2 * M_PI * k * r * r * std::sqrt(a2 - r * r) * r * std::sqrt(a2) *
+                                 std::cos(theta);
+                        }
+                        return sum;
+                      }();
+  EXPECT_NEAR(energy, 0.4 * force * delta, 1e-12 * force * delta);
+  EXPECT_NEAR(hertzElasticAmplitude(phys, R) * 2 / (3 * R), k, 1e-15 * k);
+}
+
 }  // namespace
 }  // namespace roundedmesh
