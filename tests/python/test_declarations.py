@@ -117,3 +117,26 @@ def test_a_scene_with_positional_material_records_still_runs(tmp_path):
     O.step()
     assert O.forces.f(first) == named
     assert math.isfinite(rm.critical_timestep())
+
+
+def test_a_scene_saved_before_the_options_were_kept_by_key_runs_with_its_own(tmp_path):
+    """Scenes saved before issue 36 name the options in the engine's command and keep them in one tag without the
+    threads: they load and run with those options, as they did."""
+    first = two_frictional_balls()
+    O.engines = [ForceResetter(), rm.engine(friction="viscous"), NewtonIntegrator(damping=0)]
+    O.dt = 1e-7
+    O.save(str(tmp_path / "keyed.yade"))
+    O.step()
+    keyed = O.forces.f(first)
+    O.load(str(tmp_path / "keyed.yade"))
+    rm.scene._forget_process_state()
+    O.engines[1].command = ("__import__('roundedmesh').scene.step(gamma=10.0, regime='auto', friction='viscous', "
+                            "stop_overlap=0.5, curvature='mean', normal='pressure')")
+    for key in O.tags.keys():
+        if key.startswith("roundedmesh.options."):
+            O.tags[key] = ""  # a deleted tag
+    O.tags["roundedmesh.options"] = json.dumps({"gamma": 10.0, "regime": "auto", "friction": "spring",
+                                                "stop_overlap": 0.5, "curvature": "mean", "normal": "pressure"})
+    O.step()
+    assert O.forces.f(first) == keyed
+    assert json.loads(O.tags["roundedmesh.options"])["friction"] == "viscous"
