@@ -20,9 +20,9 @@
 #include "pkg/law/CoulombFriction.hpp"
 #include "pkg/law/HertzPressure.hpp"
 #include "pkg/law/NodeForces.hpp"
-#include "pkg/shape/BodyMesh.hpp"
-#include "pkg/shape/Icosphere.hpp"
+#include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/meshing/Spheroid.hpp"
+#include "pkg/shape/Icosphere.hpp"
 
 namespace roundedmesh::test {
 
