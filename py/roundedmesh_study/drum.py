@@ -96,15 +96,17 @@ import warnings
 import numpy as np
 
 import roundedmesh as rm  # imports YADE
+from roundedmesh import placement
 from roundedmesh.export import VtkSeries
 from roundedmesh.progress import Progress
 
-from . import SCRIPTS, peers
-from .benchmarking import machine
 from yade import (Bo1_Facet_Aabb, Bo1_Sphere_Aabb, ForceResetter, FrictMat, Ig2_Facet_Sphere_ScGeom,
                   Ig2_Sphere_Sphere_ScGeom, InsertionSortCollider, InteractionLoop, Ip2_FrictMat_FrictMat_MindlinPhys,
                   Law2_ScGeom_MindlinPhys_Mindlin, MatchMaker, NewtonIntegrator, O, RotationEngine, utils)
 from yade.minieigenHP import Quaternion, Vector3
+
+from . import SCRIPTS, peers
+from .benchmarking import machine
 
 # --- scene S7 (doc/scenes.md) ---------------------------------------------------------------------------
 DRUM_RADIUS = 0.15        # inner radius: the panels' distance from the axis [m]
@@ -314,11 +316,6 @@ def proxy_spheres(name, mesh):
     return centres[keep], radii[keep]
 
 
-def _unit_quaternion(rng):
-    q = rng.normal(size=4)  # a normalised 4D Gaussian is a uniformly random rotation
-    return q / np.linalg.norm(q)
-
-
 def _yade_quaternion(q):
     w, x, y, z = q
     result = Quaternion(w, x, y, z)
@@ -349,10 +346,8 @@ def lattice(seed):
     inside = DRUM_RADIUS - LIFTER_HEIGHT - clearance
     nodes = np.array([(x, y, z) for y in axis for x in axis for z in axis
                       if abs(y) <= DRUM_LENGTH / 2 - clearance and math.hypot(x, z) <= inside])
-    if len(nodes) < len(order):
-        raise RuntimeError(f"placement: the lattice has {len(nodes)} nodes for {len(order)} bodies")
-    chosen = nodes[rng.permutation(len(nodes))[:len(order)]]  # bears, pears and spheres mixed
-    return [(kind, node + rng.uniform(-JITTER, JITTER, 3), _unit_quaternion(rng)) for kind, node in zip(order, chosen)]
+    poses = placement.lattice_poses(nodes, len(order), rng, JITTER)   # bears, pears and spheres mixed
+    return [(kind, position, q) for kind, (position, q) in zip(order, poses)]
 
 
 def _depths():
@@ -445,20 +440,11 @@ def _relax(poses, log, allowed=0.0, max_steps=None):
     O.engines = [ForceResetter(), rm.engine(stop_overlap=math.inf),
                  NewtonIntegrator(damping=RELAX_DAMPING, gravity=(0, 0, 0))]
     O.dt = TIME_STEP
-    target, deepest = allowed or RELAXED_DEPTH, math.inf
-    max_steps = max_steps or RELAX_MAX_STEPS
-    while O.iter < max_steps:
-        O.run(100, True)
-        depths = rm.contacts()["depth"]
-        deepest = depths.max() if len(depths) else 0.0
-        if O.iter % 1000 == 0 or deepest < target:
-            log(f"  relaxing: step {O.iter}, {len(depths)} touching pairs, deepest {deepest * 1e3:.4f} mm")
-        if deepest < target:
-            break
-    else:
+    try:
+        placement.push_apart(allowed or RELAXED_DEPTH, max_steps or RELAX_MAX_STEPS, log=log)
+    except RuntimeError as error:
         size = f"enlarged by {ENLARGE:.1%}" if not allowed else "at their own size"
-        raise RuntimeError(f"placement: the bodies, {size}, still overlap by {deepest * 1e3:.3f} mm after {max_steps} "
-                           f"steps (wanted: {target * 1e3:g} mm); the drum does not hold them apart")
+        raise RuntimeError(f"{error}, {size}: the drum does not hold them apart") from None
     return [(kind, np.array(O.bodies[i].state.pos), _wxyz(O.bodies[i].state.ori))
             for (kind, _, _), i in zip(poses, ids)]
 
@@ -478,13 +464,7 @@ def check_start(poses, allowed=0.0):
     _add_bodies(poses, body)
     O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(damping=0, gravity=(0, 0, 0))]
     O.dt = TIME_STEP
-    O.step()
-    depths = rm.contacts()["depth"]
-    if (not allowed and len(depths)) or (len(depths) and depths.max() > allowed):
-        raise RuntimeError(f"placement: {len(depths)} pairs touch at the start, the deepest by "
-                           f"{depths.max() * 1e3:.4f} mm"
-                           + (f" (allowed: {allowed * 1e3:g} mm)" if allowed else ""))
-    return len(depths)
+    return placement.touching(allowed)
 
 
 SHIPPED_PLACEMENTS = os.path.join(SCRIPTS, "examples", "drum_placements")
