@@ -21,7 +21,6 @@ writes coarse_clearance.csv (one row per mesh, tolerance and orientation) and co
 import argparse
 import os
 import shlex
-import sys
 import time
 import warnings
 

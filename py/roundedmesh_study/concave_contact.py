@@ -60,7 +60,6 @@ model; the force where Hertz does not hold).
 import argparse
 import math
 import os
-import sys
 import time
 
 import matplotlib

@@ -43,7 +43,6 @@ import functools
 import math
 import os
 import shlex
-import sys
 import time
 
 import matplotlib

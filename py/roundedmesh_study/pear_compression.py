@@ -36,7 +36,6 @@ import argparse
 import math
 import os
 import shlex
-import sys
 
 import matplotlib
 

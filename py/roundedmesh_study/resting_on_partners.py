@@ -13,7 +13,6 @@ Writes resting.csv (one row per partner and orientation) and resting.png (drift 
 worst drift per partner. About 20 s per orientation and partner on one core.
 """
 import argparse
-import math
 import os
 import time
 
