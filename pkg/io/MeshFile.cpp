@@ -217,7 +217,10 @@ void requireFiniteTextVertices(const std::string& path, const std::string& kind)
       if (offLines <= 2) {
         double count = 0;
         const std::string& counts = header ? (tokens.size() > 1 ? tokens[1] : std::string()) : tokens[0];
-        if (!counts.empty() && parseReal(counts, count) == Parsed::number && count >= 0) offVertices = count;
+        // A whole number within a double's exact integers (a count of 1e117 has no std::uint64_t: off_reader_fuzzer).
+        if (!counts.empty() && parseReal(counts, count) == Parsed::number && count >= 0 && count <= 0x1p53 &&
+            count == std::floor(count))
+          offVertices = static_cast<std::uint64_t>(count);
         continue;
       }
       if (vertex >= offVertices) return;
