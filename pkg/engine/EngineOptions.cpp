@@ -35,11 +35,8 @@ const std::vector<EngineOptionField> kFields = {
 };
 
 const EngineOptionField& field(const std::string& name) {
-  for (const EngineOptionField& f : kFields)
-    if (name == f.name) return f;
-  std::string known;
-  for (const EngineOptionField& f : kFields) known += std::string(known.empty() ? "" : ", ") + f.name;
-  throw std::invalid_argument("unknown engine option '" + name + "'; known: " + known);
+  if (const EngineOptionField* f = findEngineOptionField(name)) return *f;
+  throw std::invalid_argument("unknown engine option '" + name + "'; known: " + engineOptionNames());
 }
 
 // The enum behind a choice, as the index of its value in the field's list.
@@ -61,6 +58,18 @@ std::string number(Real value) {
 }  // namespace
 
 const std::vector<EngineOptionField>& engineOptionFields() { return kFields; }
+
+const EngineOptionField* findEngineOptionField(const std::string& name) {
+  for (const EngineOptionField& f : kFields)
+    if (name == f.name) return &f;
+  return nullptr;
+}
+
+std::string engineOptionNames() {
+  std::string names;
+  for (const EngineOptionField& f : kFields) names += std::string(names.empty() ? "" : ", ") + f.name;
+  return names;
+}
 
 void EngineOptions::validate() const {
   if (!(std::isfinite(pressure.gamma) && pressure.gamma > 0))

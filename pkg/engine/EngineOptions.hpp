@@ -43,6 +43,10 @@ struct EngineOptionField {
 };
 
 const std::vector<EngineOptionField>& engineOptionFields();
+// The field named `name`; nullptr if there is none.
+const EngineOptionField* findEngineOptionField(const std::string& name);
+// The fields' names, comma-separated, for messages.
+std::string engineOptionNames();
 
 // A choice's value by name and back, for the option `name` of the table; numbers as numbers. Throws
 // std::invalid_argument naming the option and its allowed values.

@@ -23,18 +23,6 @@ bool isNumber(const bp::object& value) {
          !PyComplex_Check(p);
 }
 
-const EngineOptionField* findField(const std::string& name) {
-  for (const EngineOptionField& f : engineOptionFields())
-    if (name == f.name) return &f;
-  return nullptr;
-}
-
-std::string knownNames() {
-  std::string known;
-  for (const EngineOptionField& f : engineOptionFields()) known += std::string(known.empty() ? "" : ", ") + f.name;
-  return known;
-}
-
 bp::object valueOf(const EngineOptions& options, const EngineOptionField& f) {
   if (!f.choices.empty()) return bp::object(choiceName(options, f.name));
   const Real number = numberValue(options, f.name);
@@ -46,7 +34,7 @@ std::shared_ptr<EngineOptions> copyOf(const EngineOptions& options) { return std
 // EngineOptions(**options): the keyword arguments as the binding's one entry point, so that an unknown name, a
 // value of the wrong type and a value out of range each get a message naming the option.
 bp::object construct(bp::tuple args, bp::dict keywords) {
-  if (bp::len(args) != 1) raiseTypeError("EngineOptions takes keyword arguments only (" + knownNames() + ")");
+  if (bp::len(args) != 1) raiseTypeError("EngineOptions takes keyword arguments only (" + engineOptionNames() + ")");
   return args[0].attr("_construct")(engineOptions(keywords));
 }
 
@@ -80,9 +68,9 @@ EngineOptions engineOptions(const bp::dict& keywords) {
   std::string unknown;
   for (long k = 0; k < bp::len(names); ++k) {
     const std::string name = bp::extract<std::string>(names[k]);
-    if (!findField(name)) unknown += std::string(unknown.empty() ? "" : ", ") + name;
+    if (!findEngineOptionField(name)) unknown += std::string(unknown.empty() ? "" : ", ") + name;
   }
-  if (!unknown.empty()) raiseTypeError("unknown option(s) " + unknown + "; known: " + knownNames());
+  if (!unknown.empty()) raiseTypeError("unknown option(s) " + unknown + "; known: " + engineOptionNames());
   for (const EngineOptionField& f : engineOptionFields()) {
     if (!keywords.has_key(f.name)) continue;
     const bp::object value = keywords[f.name];
@@ -117,7 +105,7 @@ void exposeEngineOptions() {
   for (const EngineOptionField& f : engineOptionFields()) {
     const std::string name = f.name;
     options.add_property(f.name, bp::make_function(
-                                     [name](const EngineOptions& o) { return valueOf(o, *findField(name)); },
+                                     [name](const EngineOptions& o) { return valueOf(o, *findEngineOptionField(name)); },
                                      bp::default_call_policies(),
                                      boost::mpl::vector<bp::object, const EngineOptions&>()));
     names.append(f.name);
