@@ -1,9 +1,11 @@
 #include "pkg/engine/PairEvaluation.hpp"
 
+#include "pkg/engine/WeldedFacets.hpp"
+
 namespace roundedmesh {
 namespace {
 
-// Body 0 of `model` against its other entity (body 1, or partner 0), in the states given.
+// Body 0 of `model` against each other entity (body 1, or every partner), in the states given.
 PairEvaluation evaluate(ContactModel& model, const std::vector<BodyState>& bodies,
                         const std::vector<BodyState>& partners, const EngineOptions& options, bool details) {
   options.validate();
@@ -16,9 +18,14 @@ PairEvaluation evaluate(ContactModel& model, const std::vector<BodyState>& bodie
   data.partnerStates = partners;
   PairEvaluation out;
   std::vector<PressureGeom> scratch;
-  const PairResult r = resolvePair(model, data, {0, 1}, scratch, details ? &out.contacts : nullptr);
-  out.onFirst = r.onBody;
-  out.onSecond = r.onOther;
+  const int others = static_cast<int>(model.bodies.size() + model.partners.size());
+  for (int other = 1; other < others; ++other) {
+    const PairResult r = resolvePair(model, data, {0, other}, scratch, details ? &out.contacts : nullptr);
+    out.onFirst.force += r.onBody.force;
+    out.onFirst.torque += r.onBody.torque;
+    out.onPartners.push_back(r.onOther);
+  }
+  out.onSecond = out.onPartners.front();
   return out;
 }
 
@@ -31,6 +38,16 @@ PairEvaluation partnerContact(const RoundedBody& body, const BodyState& state, c
   model.bodies.push_back(body);
   model.partners.push_back({-1, partner, partnerMaterial});
   return evaluate(model, {state}, {partnerState}, options, details);
+}
+
+PairEvaluation surfaceContact(const RoundedBody& body, const BodyState& state, std::vector<Partner> partners,
+                              const std::vector<BodyState>& partnerStates, const EngineOptions& options,
+                              bool details) {
+  ContactModel model;
+  model.bodies.push_back(body);
+  model.partners = std::move(partners);
+  weldFacetPartners(model, partnerStates);
+  return evaluate(model, {state}, partnerStates, options, details);
 }
 
 PairEvaluation planeContact(const RoundedBody& body, const BodyState& state, const Plane& plane,

@@ -14,6 +14,7 @@ namespace roundedmesh {
 
 struct PairEvaluation {
   Wrench onFirst, onSecond;
+  std::vector<Wrench> onPartners;         // surfaceContact: on each partner, about its position
   std::vector<TriangleContact> contacts;  // filled only with `details`
 };
 
@@ -21,6 +22,12 @@ struct PairEvaluation {
 PairEvaluation partnerContact(const RoundedBody& body, const BodyState& state, const PartnerShape& partner,
                               const BodyState& partnerState, const HertzMaterial& partnerMaterial,
                               const EngineOptions& options, bool details = false);
+
+// Against several partners at once, as in a scene: the Facets among them welded into surfaces (WeldedFacets.hpp),
+// each partner's pair resolved, the wrenches on the body summed into onFirst.
+PairEvaluation surfaceContact(const RoundedBody& body, const BodyState& state, std::vector<Partner> partners,
+                              const std::vector<BodyState>& partnerStates, const EngineOptions& options,
+                              bool details = false);
 
 PairEvaluation planeContact(const RoundedBody& body, const BodyState& state, const Plane& plane,
                             const HertzMaterial& planeMaterial, const EngineOptions& options, bool details = false);

@@ -78,9 +78,9 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
                                                            curvature);
                         },
                         [&](const Facet& facet) {
-                          std::array<Vector3r, 3> corners = facetCorners(facet, s2.position, s2.orientation);
-                          for (Vector3r& x : corners) x = inBody(x);
-                          Ig2_RoundedMesh_Facet_PressureGeom(*body.mesh, corners, motion, out, curvature);
+                          Ig2_RoundedMesh_Facet_PressureGeom(
+                              *body.mesh, placeFacet(facet, R_BW * s2.orientation.toRotationMatrix(), inBody(s2.position)),
+                              motion, out, curvature);
                         },
                         [&](const Sphere& sphere) {
                           Ig2_RoundedMesh_Sphere_PressureGeom(

@@ -33,9 +33,9 @@ PairResult resolveSpherePair(const ContactModel& model, const ContactData& data,
                                           motion, geom);
                  },
                  [&](const Facet& f) {
-                   std::array<Vector3r, 3> corners = facetCorners(f, s2.position, s2.orientation);
-                   for (Vector3r& x : corners) x = local(x);
-                   return spherePlaneGeom(radius, facetPlane(corners), motion, geom);
+                   const std::optional<Plane> plane =
+                       facetPlane(placeFacet(f, s2.orientation.toRotationMatrix(), local(s2.position)));
+                   return plane ? spherePlaneGeom(radius, *plane, motion, geom) : GeomTest{Rejection::NoOverlap};
                  }},
       other.shape);
   PairResult result;

@@ -3,17 +3,26 @@
 // the facet (trianglePlaneGeom). A facet is a sheet (faceGeometry): a cap behind its plane touches it only where the
 // facet's point under the cap lies inside the body, so that a body resting on one face of a ridge of Facets (a
 // drum's lifter) is not pushed by the ridge's other face, whose plane it crosses beyond the ridge.
-// Inputs in body 1's frame: the facet's corners, and the facet's motion relative to body 1.
+// A welded facet (FacetSurface.hpp) is a member of a panel of coplanar facets: S is clipped to the panel's outline,
+// so that a body across a flat seam meets one plane, and the facet keeps the contacts whose c_eff it holds (the
+// panel's other members keep the rest); a seam where the surface goes on toward the body is no edge a cap can come
+// round.
+// Inputs in body 1's frame: the facet placed there, and the facet's motion relative to body 1.
 #pragma once
 
-#include <array>
 #include <vector>
 
 #include "pkg/geom/TrianglePlaneGeom.hpp"
+#include "pkg/shape/Facet.hpp"
 
 namespace roundedmesh {
 
-void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const std::array<Vector3r, 3>& corners,
-                                        const RelativeMotion& motion, GeomOutput out, CurvatureModel model = CurvatureModel::Mean);
+void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFacet& facet, const RelativeMotion& motion,
+                                        GeomOutput out, CurvatureModel model = CurvatureModel::Mean);
+
+// Whether point p of the facet's plane, in the coordinates `inPlane` gives, belongs to the facet among its panel's
+// members: inside it, or on an edge or at a corner it owns (FacetWeld). Within a billionth of the facet's size of an
+// edge or corner, the point is taken to be on it, so that every member decides alike despite round-off.
+bool facetOwns(const std::array<Vector2r, 3>& corners, const FacetWeld& weld, const Vector2r& p);
 
 }  // namespace roundedmesh

@@ -1,6 +1,10 @@
 #include "pkg/geom/Ig2_Sphere_Partner_PressureGeom.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -59,19 +63,39 @@ Plane boxPlane(const Box& box, const Vector3r& centre, const Matrix3r& orientati
   return {centre + orientation * (local + (side * h[axis] - local[axis]) * Vector3r::Unit(axis)), normal};
 }
 
-Plane facetPlane(const std::array<Vector3r, 3>& corners) {
+std::optional<Plane> facetPlane(const PlacedFacet& facet) {
   // The facet in its own plane coordinates (origin at corner 0), the sphere's centre projected on it.
+  const std::array<Vector3r, 3>& corners = facet.corners;
   const Vector3r u = (corners[1] - corners[0]).normalized();
   Vector3r normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
   const Vector3r v = normal.cross(u);
   auto inPlane = [&](const Vector3r& x) { return Vector2r((x - corners[0]).dot(u), (x - corners[0]).dot(v)); };
-  const ConvexPolygon triangle = ConvexPolygon::triangle(Vector2r::Zero(), inPlane(corners[1]), inPlane(corners[2]));
-  const Vector2r p = triangle.closestPoint(inPlane(Vector3r::Zero()));
+  const std::array<Vector2r, 3> own{Vector2r::Zero(), inPlane(corners[1]), inPlane(corners[2])};
+  const Vector2r centre = inPlane(Vector3r::Zero());
+  Vector2r p;
+  if (facet.weld) {  // the outline, counter-clockwise about the normal: the centre, or its nearest edge's point
+    p = centre;
+    Real nearest = std::numeric_limits<Real>::infinity();
+    const int n = static_cast<int>(facet.outline.size());
+    for (int i = 0; i < n; ++i) {
+      const Vector2r a = inPlane(facet.outline[i]), b = inPlane(facet.outline[(i + 1) % n]);
+      if (cross2(b - a, centre - a) >= 0) continue;
+      const Real along = std::clamp((centre - a).dot(b - a) / (b - a).squaredNorm(), Real(0), Real(1));
+      const Vector2r x = a + along * (b - a);
+      if ((x - centre).squaredNorm() < nearest) {
+        nearest = (x - centre).squaredNorm();
+        p = x;
+      }
+    }
+    if (facet.weld->panelSize > 1 && !facetOwns(own, *facet.weld, p)) return std::nullopt;
+  } else {
+    p = ConvexPolygon::triangle(own[0], own[1], own[2]).closestPoint(centre);
+  }
   if (normal.dot(-corners[0]) < 0) normal = -normal;  // both sides touch: the one the sphere is on
   const Vector3r point = corners[0] + p.x() * u + p.y() * v;
   // Normal to the line from the sphere's centre, or the facet's own normal if the centre lies on the facet.
   const Real distance = point.norm();
-  return {point, distance > 0 ? Vector3r(-point / distance) : normal};
+  return Plane{point, distance > 0 ? Vector3r(-point / distance) : normal};
 }
 
 }  // namespace roundedmesh

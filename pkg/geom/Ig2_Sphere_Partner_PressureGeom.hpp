@@ -12,9 +12,11 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "pkg/geom/PressureGeom.hpp"
 #include "pkg/shape/Box.hpp"
+#include "pkg/shape/Facet.hpp"
 #include "pkg/shape/Plane.hpp"
 
 namespace roundedmesh {
@@ -25,9 +27,10 @@ GeomTest sphereSphereGeom(Real radius, const Vector3r& centre2, Real radius2, co
 // plane: in the sphere's frame, normal toward the sphere.
 GeomTest spherePlaneGeom(Real radius, const Plane& plane, const RelativeMotion& motion, PressureGeom& geom);
 
-// The plane a Box (centre, orientation: box frame -> sphere frame) or a Facet (corners) presents to a sphere
-// centred at the origin.
+// The plane a Box (centre, orientation: box frame -> sphere frame) or a Facet (placed in the sphere's frame)
+// presents to a sphere centred at the origin: through the partner's point nearest the centre. A welded Facet
+// presents its panel's (FacetSurface.hpp), and nothing (nullopt) when that point belongs to another member.
 Plane boxPlane(const Box& box, const Vector3r& centre, const Matrix3r& orientation);
-Plane facetPlane(const std::array<Vector3r, 3>& corners);
+std::optional<Plane> facetPlane(const PlacedFacet& facet);
 
 }  // namespace roundedmesh

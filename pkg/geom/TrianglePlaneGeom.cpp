@@ -8,6 +8,28 @@
 #include "pkg/geom/EllipticalContact.hpp"
 
 namespace roundedmesh {
+namespace {
+
+// The polygon clipped to the outline moved by `offset`: by the edges it crosses only, so that a panel's outline of
+// many corners leaves a small polygon small.
+ConvexPolygon clippedToOutline(const ConvexPolygon& polygon, const FaceOutline& outline, const Vector2r& offset) {
+  ConvexPolygon buffers[2];
+  int spare = 0;
+  const ConvexPolygon* current = &polygon;
+  const int n = static_cast<int>(outline.corners.size());
+  for (int i = 0; i < n && !current->empty(); ++i) {
+    const Vector2r a = outline.corners[i] + offset, b = outline.corners[(i + 1) % n] + offset;
+    bool crosses = false;
+    for (int k = 0; k < current->size() && !crosses; ++k) crosses = cross2(b - a, (*current)[k] - a) < 0;
+    if (!crosses) continue;
+    current->clipInto(a, b, buffers[spare]);
+    current = &buffers[spare];
+    spare = 1 - spare;
+  }
+  return *current;
+}
+
+}  // namespace
 
 GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactFace& face,
                            const RelativeMotion& motion, PressureGeom& geom, CurvatureModel model) {
@@ -30,7 +52,7 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
   const Triangle& corners = mesh.triangles()[triangle];
   for (int i = 0; i < 3; ++i) geom.nodes[i] = toPlane(mesh.vertices()[corners[i]]);
   geom.polygon = ConvexPolygon::triangle(geom.nodes[0], geom.nodes[1], geom.nodes[2]);
-  if (face.faceOutline) geom.polygon = geom.polygon.intersection(face.faceOutline->translated(toPlane(face.origin)));
+  if (face.faceOutline) geom.polygon = clippedToOutline(geom.polygon, *face.faceOutline, toPlane(face.origin));
   if (geom.polygon.empty()) return {Rejection::EmptyPolygon};
 
   geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
@@ -58,11 +80,13 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
 
 namespace {
 
-// How far p, inside a convex outline, lies from its boundary.
-Real distanceToEdge(const ConvexPolygon& outline, const Vector2r& p) {
+// How far p, inside a convex outline, lies from its nearest open edge (infinity if none is open).
+Real distanceToOpenEdge(const FaceOutline& outline, const Vector2r& p) {
   Real nearest = std::numeric_limits<Real>::infinity();
-  for (int i = 0; i < outline.size(); ++i) {
-    const Vector2r a = outline[i], b = outline[(i + 1) % outline.size()];
+  const int n = static_cast<int>(outline.corners.size());
+  for (int i = 0; i < n; ++i) {
+    if (!outline.open.empty() && !outline.open[i]) continue;
+    const Vector2r a = outline.corners[i], b = outline.corners[(i + 1) % n];
     const Real along = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), Real(0), Real(1));
     nearest = std::min(nearest, (p - (a + along * (b - a))).norm());
   }
@@ -83,8 +107,7 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
   if (face.faceOutline) {
     prism.setEmpty();
     const Real reach = 2 * mesh.sphereBoundRadius();
-    for (int i = 0; i < face.faceOutline->size(); ++i) {
-      const Vector2r& x = (*face.faceOutline)[i];
+    for (const Vector2r& x : face.faceOutline->corners) {
       const Vector3r corner = face.origin + x.x() * face.tangent1 + x.y() * face.tangent2;
       prism.extend(corner + reach * face.normal).extend(corner - reach * face.normal);
     }
@@ -92,13 +115,14 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
   PressureGeom geom;
   mesh.tree().query([&](const AlignedBox3r& box) { return reachesPlane(box) && box.intersects(prism); }, [&](int t) {
     GeomTest result = trianglePlaneGeom(mesh, t, face, motion, geom, model);
+    if (result && face.owns && !face.owns(faceCoordinates(face, planePoint(geom, geom.effectivePoint)))) return;
     if (result && face.sheet) {
       // The line along n12 through c_eff meets triangle t (c_eff is in its projection S) `behind` the sheet, or in
       // front of it, where only the cap's bulge crosses the sheet and c_eff lies between the triangle and the cap.
       const Vector3r onSheet = planePoint(geom, geom.effectivePoint);
       const Real behind = lineToTriangle(mesh, t, onSheet, face.normal);
       if ((behind > 0 && !pathInsideBody(mesh, t, onSheet + behind * face.normal, onSheet)) ||
-          !(geom.effectiveOverlap <= distanceToEdge(*face.faceOutline, faceCoordinates(face, onSheet))))
+          !(geom.effectiveOverlap <= distanceToOpenEdge(*face.faceOutline, faceCoordinates(face, onSheet))))
         result = {Rejection::ThroughBody};
     }
     out.add(result, geom);

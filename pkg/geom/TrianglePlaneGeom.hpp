@@ -10,20 +10,34 @@
 // the pressure of Eq. 9 act on the triangle.
 #pragma once
 
+#include <functional>
+#include <vector>
+
 #include "pkg/geom/PressureGeom.hpp"
 #include "pkg/shape/RoundedMesh.hpp"
 
 namespace roundedmesh {
 
+// The outline of a finite face: corners counter-clockwise about n12, in (t1, t2) coordinates relative to the face's
+// origin; for a sheet, whether a cap can come round each edge (corners i, i + 1): a free or convex edge, not a seam
+// where the surface goes on toward the body (FacetSurface.hpp).
+struct FaceOutline {
+  std::vector<Vector2r> corners;
+  std::vector<bool> open;  // empty: every edge
+};
+
 // A face of the partner in body 1's frame: a point on it, the normal n12 pointing into the partner, and
-// in-plane axes with t1 x t2 = n12. faceOutline, if given, bounds a finite face in (t1, t2) coordinates
-// relative to origin. A sheet (a Facet: zero thickness) has nothing behind it: see faceGeometry.
+// in-plane axes with t1 x t2 = n12. faceOutline, if given, bounds a finite face. A sheet (a Facet: zero thickness)
+// has nothing behind it: see faceGeometry. owns, if set, keeps only the contacts whose c_eff (in outline
+// coordinates) it holds: the face is a panel of several facets, each computing the panel's contacts and keeping
+// its own.
 struct ContactFace {
   Vector3r origin;
   Vector3r normal;
   Vector3r tangent1, tangent2;
-  const ConvexPolygon* faceOutline = nullptr;
+  const FaceOutline* faceOutline = nullptr;
   bool sheet = false;
+  std::function<bool(const Vector2r&)> owns;
 };
 
 // A point x of the face's plane in the (t1, t2) coordinates of its outline, relative to its origin.
@@ -44,9 +58,9 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
 // the path along n12 from the triangle (behind the sheet) to the sheet's point c_eff running inside the body
 // (pathInsideBody, DeepContactCriterion.hpp); elsewhere the cap has gone past the sheet's edge on another side of it
 // (a body resting on one face of a ridge of Facets, or wrapped around it), and the candidate is rejected as
-// ThroughBody. So is a cap deeper behind a sheet than c_eff lies from the sheet's edge: the cap has come round the
-// edge (a lifter's ridge cutting into a body straddling it), and moving it past the edge parts it from the sheet
-// sooner than pushing it back through; a sheet's edge is sharp and carries no force of its own.
+// ThroughBody. So is a cap deeper behind a sheet than c_eff lies from the sheet's nearest open edge: the cap has come
+// round the edge (a lifter's ridge cutting into a body straddling it), and moving it past the edge parts it from the
+// sheet sooner than pushing it back through. A seam where the surface goes on toward the body is no such edge.
 void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
                   CurvatureModel model = CurvatureModel::Mean);
 

@@ -1,17 +1,22 @@
 // YADE's Facet: a flat triangle with corners `vertices` [m] in the facet body's frame (relative to its
 // position, turned by its orientation). Both sides touch; a rounded body meets the side its centre is on.
 // As a contact partner it is a finite plane (Section 2.3): radius of curvature infinite, polygon S the
-// intersection of the two projected triangles.
+// intersection of the two projected triangles. Facets welded into a surface (FacetSurface.hpp) carry their weld:
+// the panel of coplanar facets they belong to, and what lies beyond each edge.
 #pragma once
 
 #include <array>
+#include <memory>
+#include <vector>
 
 #include "pkg/common/Types.hpp"
+#include "pkg/shape/FacetSurface.hpp"
 
 namespace roundedmesh {
 
 struct Facet {
   std::array<Vector3r, 3> vertices;
+  std::shared_ptr<const FacetWeld> weld;  // outline in the facet body's frame; none: a facet alone
 };
 
 // The facet's corners placed by its body's position and orientation [m].
@@ -19,6 +24,24 @@ inline std::array<Vector3r, 3> facetCorners(const Facet& facet, const Vector3r& 
   std::array<Vector3r, 3> corners;
   for (int i = 0; i < 3; ++i) corners[i] = position + orientation * facet.vertices[i];
   return corners;
+}
+
+// A facet moved into another frame (x' = rotation x + translation, x in the facet body's frame): its corners and,
+// welded, its panel's outline, with the weld's flags.
+struct PlacedFacet {
+  std::array<Vector3r, 3> corners;
+  std::vector<Vector3r> outline;  // empty for a facet alone
+  const FacetWeld* weld = nullptr;
+};
+
+inline PlacedFacet placeFacet(const Facet& facet, const Matrix3r& rotation, const Vector3r& translation) {
+  PlacedFacet placed;
+  for (int i = 0; i < 3; ++i) placed.corners[i] = rotation * facet.vertices[i] + translation;
+  if (facet.weld) {
+    placed.weld = facet.weld.get();
+    for (const Vector3r& x : facet.weld->outline) placed.outline.push_back(rotation * x + translation);
+  }
+  return placed;
 }
 
 }  // namespace roundedmesh

@@ -354,26 +354,49 @@ bp::tuple sphereContact(const BodyMesh& mesh, const Vector3r& pos, const Quatern
                                             sphereMaterial, options, details));
 }
 
+// A partner's state as YADE has it, checked finite.
+BodyState partnerState(const bp::object& partner, int id) {
+  const bp::object s = partner.attr("state");
+  BodyState state;
+  state.position = bp::extract<Vector3r>(s.attr("pos"));
+  state.orientation = bp::extract<Quaternionr>(s.attr("ori"));
+  state.velocity = bp::extract<Vector3r>(s.attr("vel"));
+  state.angularVelocity = bp::extract<Vector3r>(s.attr("angVel"));
+  if (!(state.position.allFinite() && state.orientation.coeffs().allFinite() && state.orientation.norm() > 0 &&
+        state.velocity.allFinite() && state.angularVelocity.allFinite()))
+    throw std::invalid_argument("partner (body " + std::to_string(id) +
+                                "): its state (pos, ori, vel, angVel) must be finite, with a nonzero ori");
+  state.orientation.normalize();
+  return state;
+}
+
+// `partner`: one YADE Body, or a sequence of them (a surface: its Facets welded, as in a scene). For a sequence the
+// third and fourth items list the wrench on each partner.
 bp::tuple partnerContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const bp::object& partner,
                          const HertzMaterial& meshMaterial, const HertzMaterial& partnerMaterial, const Vector3r& vel,
                          const Vector3r& angVel, bool details, const EngineOptions& options) {
-  const int id = bp::extract<int>(partner.attr("id"));
-  const PartnerShape shape = yadeShape(partner, id);
-  const bp::object s = partner.attr("state");
-  BodyState partnerState;
-  partnerState.position = bp::extract<Vector3r>(s.attr("pos"));
-  partnerState.orientation = bp::extract<Quaternionr>(s.attr("ori"));
-  partnerState.velocity = bp::extract<Vector3r>(s.attr("vel"));
-  partnerState.angularVelocity = bp::extract<Vector3r>(s.attr("angVel"));
-  if (!(partnerState.position.allFinite() && partnerState.orientation.coeffs().allFinite() &&
-        partnerState.orientation.norm() > 0 && partnerState.velocity.allFinite() &&
-        partnerState.angularVelocity.allFinite()))
-    throw std::invalid_argument("partner (body " + std::to_string(id) +
-                                "): its state (pos, ori, vel, angVel) must be finite, with a nonzero ori");
-  partnerState.orientation.normalize();
-  return asTuple(roundedmesh::partnerContact(roundedBody(0, mesh, meshMaterial), bodyState(pos, ori, vel, angVel, 0),
-                                             shape, partnerState, partnerMaterial,
-                                             options, details));
+  const RoundedBody body = roundedBody(0, mesh, meshMaterial);
+  const BodyState state = bodyState(pos, ori, vel, angVel, 0);
+  if (PyObject_HasAttrString(partner.ptr(), "id")) {
+    const int id = bp::extract<int>(partner.attr("id"));
+    return asTuple(roundedmesh::partnerContact(body, state, yadeShape(partner, id), partnerState(partner, id),
+                                               partnerMaterial, options, details));
+  }
+  std::vector<Partner> partners;
+  std::vector<BodyState> states;
+  for (bp::stl_input_iterator<bp::object> it(partner), end; it != end; ++it) {
+    const int id = bp::extract<int>((*it).attr("id"));
+    partners.push_back({id, yadeShape(*it, id), partnerMaterial});
+    states.push_back(partnerState(*it, id));
+  }
+  if (partners.empty()) throw std::invalid_argument("partner: an empty sequence; give a body or a list of bodies");
+  const PairEvaluation e = surfaceContact(body, state, partners, states, options, details);
+  bp::list forces, torques;
+  for (const Wrench& w : e.onPartners) {
+    forces.append(w.force);
+    torques.append(w.torque);
+  }
+  return bp::make_tuple(e.onFirst.force, e.onFirst.torque, forces, torques, describeAll(e.contacts));
 }
 
 bp::tuple bodyContact(const BodyMesh& mesh1, const Vector3r& pos1, const Quaternionr& ori1, const BodyMesh& mesh2,

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "pkg/engine/WeldedFacets.hpp"
+
 namespace roundedmesh::python {
 namespace {
 
@@ -67,7 +69,7 @@ PartnerShape yadeShape(const bp::object& body, int id) {
   if (kind == "Sphere") return Sphere{bp::extract<Real>(shape.attr("radius"))};
   if (kind == "Facet") {
     const bp::object v = shape.attr("vertices");
-    return Facet{{bp::extract<Vector3r>(v[0])(), bp::extract<Vector3r>(v[1])(), bp::extract<Vector3r>(v[2])()}};
+    return Facet{{bp::extract<Vector3r>(v[0])(), bp::extract<Vector3r>(v[1])(), bp::extract<Vector3r>(v[2])()}, nullptr};
   }
   throw std::invalid_argument("body " + std::to_string(id) + ": a " + kind +
                               " cannot be a roundedmesh contact partner; Walls, Boxes, Facets and Spheres can");
@@ -99,6 +101,7 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
     readState(body, model.bodies[b].id, false, data.bodyStates[b], data.bodyClumps[b], data.bodyMasses[b],
               data.bodyInertias[b]);
   }
+  bool weldAgain = false;
   for (size_t p = 0; p < model.partners.size(); ++p) {
     Partner& partner = model.partners[p];
     const bp::object body = bodyOrNone(bodies, partner.id);
@@ -113,9 +116,17 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
       requireOwnMaterial(body, partner.id, "sphere");
       partner.shape = sphereShape(body, partner.id);
     } else {
-      partner.shape = yadeShape(body, partner.id);
+      PartnerShape shape = yadeShape(body, partner.id);
+      // A facet keeps its weld while its corners stay as they were; one that is new or was changed is welded with
+      // all the others afresh, below.
+      const Facet* before = std::get_if<Facet>(&partner.shape);
+      Facet* now = std::get_if<Facet>(&shape);
+      if (before && now && before->vertices == now->vertices) now->weld = before->weld;
+      weldAgain = weldAgain || (now && !now->weld);
+      partner.shape = std::move(shape);
     }
   }
+  if (weldAgain) weldFacetPartners(model, data.partnerStates);
   return missing;
 }
 

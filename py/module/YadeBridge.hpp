@@ -14,7 +14,7 @@ namespace bp = boost::python;
 
 // Fills data.timeStep (O.dt), data.bodyStates, data.partnerStates, their clumps, masses and principal moments of
 // inertia (a partner's 0 unless it moves under forces, `dynamic`), and refreshes the partners' shapes from their
-// YADE shapes. Returns the ids of managed bodies that are no longer in the scene; when any is missing, the
+// YADE shapes, welding the Facets into surfaces again (WeldedFacets.hpp) when one is new or its corners changed. Returns the ids of managed bodies that are no longer in the scene; when any is missing, the
 // states are incomplete and must not be used. Throws std::invalid_argument naming the body if a state is not
 // finite, a rounded or sphere body's YADE material was replaced, or a sphere body's shape is no longer a Sphere.
 std::vector<int> readScene(const bp::object& omega, ContactModel& model, ContactData& data);

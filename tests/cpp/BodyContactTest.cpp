@@ -186,7 +186,7 @@ TEST(BodyContact, SphereAndFacetPartners) {
   const Real sphereHertz = 4.0 / 3.0 * 0.5 * std::sqrt(2.0 / 3.0) * std::pow(delta, 1.5);
   EXPECT_NEAR(onSphere.partnerWrenches[0].force.y(), sphereHertz, 0.01 * sphereHertz);
 
-  model.partners[0].shape = Facet{{Vector3r(-3, -3, 0), Vector3r(3, -3, 0), Vector3r(0, 4, 0)}};
+  model.partners[0].shape = Facet{{Vector3r(-3, -3, 0), Vector3r(3, -3, 0), Vector3r(0, 4, 0)}, nullptr};
   const ContactData onFacet = run(model, {at(Vector3r(0.1, 0.2, 1 - delta))}, {at(Vector3r::Zero())});
   const Real planeHertz = 4.0 / 3.0 * 0.5 * std::pow(delta, 1.5);
   EXPECT_NEAR(onFacet.bodyWrenches[0].force.z(), planeHertz, 0.01 * planeHertz);

@@ -171,7 +171,7 @@ TEST(ContactEnergy, TheForceOverTheEdgeOfABoxOrAFacetIsMinusTheEnergysGradient) 
   }
   const Real half = 0.05;
   const Facet facet{{Vector3r(lowest.x() - 0.001, lowest.y() - 0.05, 0), Vector3r(lowest.x() + 0.08, lowest.y() + 0.0015, 0),
-                     Vector3r(lowest.x() - 0.001, lowest.y() + 0.05, 0)}};
+                     Vector3r(lowest.x() - 0.001, lowest.y() + 0.05, 0)}, nullptr};
   for (const PartnerShape& shape : {PartnerShape(Box{Vector3r::Constant(half)}), PartnerShape(facet)}) {
     const bool box = std::holds_alternative<Box>(shape);
     Pair pair;

@@ -74,7 +74,8 @@ TEST(FlatPartners, AFacetPushesOnlyWhereTheBodyReachesIt) {
   const std::array<Vector3r, 3> corners = {-0.001 * up - 0.01 * across - 0.005 * along,
                                            -0.001 * up + 0.01 * across - 0.005 * along, -0.001 * up + 0.006 * along};
   std::vector<PressureGeom> geoms;
-  Ig2_RoundedMesh_Facet_PressureGeom(ring.shape(), corners, RelativeMotion(), GeomOutput(geoms));
+  Ig2_RoundedMesh_Facet_PressureGeom(ring.shape(), PlacedFacet{corners, {}, nullptr}, RelativeMotion(),
+                                     GeomOutput(geoms));
   EXPECT_TRUE(geoms.empty());
 
   ContactFace face;
@@ -82,8 +83,9 @@ TEST(FlatPartners, AFacetPushesOnlyWhereTheBodyReachesIt) {
   face.normal = -up;
   face.tangent1 = face.normal.unitOrthogonal();
   face.tangent2 = face.normal.cross(face.tangent1);
-  const ConvexPolygon outline = ConvexPolygon::triangle(faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]),
-                                                        faceCoordinates(face, corners[2]));
+  const ConvexPolygon triangle = ConvexPolygon::triangle(
+      faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]), faceCoordinates(face, corners[2]));
+  const FaceOutline outline{{triangle[0], triangle[1], triangle[2]}, {}};
   face.faceOutline = &outline;
   faceGeometry(ring.shape(), face, RelativeMotion(), GeomOutput(geoms));
   ASSERT_FALSE(geoms.empty());
@@ -97,7 +99,7 @@ TEST(FlatPartners, AFacetPushesOnlyWhereTheBodyReachesIt) {
 // its circle (h close to a) magnifies that; 1e-9 of the force (measured worst 4e-12).
 TEST(FlatPartners, ALargeFacetActsAsItsPlane) {
   const BodyMesh ball(icosphere(0.025, 3));
-  const Facet facet{{Vector3r(-1, -1, 0), Vector3r(1.5, -1, 0), Vector3r(0, 1.5, 0)}};
+  const Facet facet{{Vector3r(-1, -1, 0), Vector3r(1.5, -1, 0), Vector3r(0, 1.5, 0)}, nullptr};
   for (Real depth : {1e-5, 1e-4, 1e-3, 2.5e-3}) {
     const BodyState body = at(Vector3r(0.01, 0.02, 0.025 - depth), Quaternionr(Eigen::AngleAxis<Real>(1.1, Vector3r(3, 1, 2).normalized())));
     const Wrench plane = against(ball, body, Plane{Vector3r::Zero(), Vector3r::UnitZ()});

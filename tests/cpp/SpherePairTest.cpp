@@ -117,7 +117,7 @@ TEST(SpherePair, FlatPartnersUseTheSphereRadius) {
   const Vector3r diagonal = Vector3r(1, 0, 1).normalized();
   check(box, test::at(Vector3r(1, 1, 1), turn),
         Vector3r(1, 1, 1) + turn * (Vector3r(0.1, 0, 0.05) + (r - overlap) * diagonal), turn * diagonal);
-  const Facet facet{{Vector3r(-0.1, -0.1, 0), Vector3r(0.1, -0.1, 0), Vector3r(0, 0.1, 0)}};
+  const Facet facet{{Vector3r(-0.1, -0.1, 0), Vector3r(0.1, -0.1, 0), Vector3r(0, 0.1, 0)}, nullptr};
   check(facet, test::at(Vector3r(0, 0, 2)), Vector3r(0.01, 0, 2 - r + overlap), -Vector3r::UnitZ());
 }
 

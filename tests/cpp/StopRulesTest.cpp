@@ -46,7 +46,7 @@ struct Scene {
   StepReport report;
 };
 
-const Facet kFacet{{Vector3r(-1, -1, 0), Vector3r(1, -1, 0), Vector3r(0, 1.5, 0)}};
+const Facet kFacet{{Vector3r(-1, -1, 0), Vector3r(1, -1, 0), Vector3r(0, 1.5, 0)}, nullptr};
 
 TEST(StopRules, ACentreThroughAWallStops) {
   for (int sense : {0, 1}) {
