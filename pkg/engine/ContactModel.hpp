@@ -49,7 +49,16 @@ struct Partner {
   PartnerShape shape;
   HertzMaterial material;
   bool sphereBody = false;  // a Sphere that touches the other partners through the engine (doc/architecture.md)
+  Real edgeRadius = -1;     // [m] what its convex edges and corners are rounded by (a Box's, a Facet surface's);
+                            // negative: the default of edgeRadiusFor
 };
+
+// The radius [m] a partner's convex edges and corners are rounded by for a body of volume-equivalent radius
+// `bodyRadius` [m]: the partner's own, or by default kDeepestOverlap of the body's: the deepest a Hertz contact is
+// meant to reach, so that the edge's contact stays in its Hertz range over the body's.
+inline Real edgeRadiusFor(const Partner& partner, Real bodyRadius) {
+  return partner.edgeRadius >= 0 ? partner.edgeRadius : kDeepestOverlap * bodyRadius;
+}
 
 // Skins of the lists kept between steps, as fractions of a volume-equivalent radius. The broad phase's
 // neighbour list grows every bound by half of `neighbours` (times the smallest body's radius) and is rebuilt

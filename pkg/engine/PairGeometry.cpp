@@ -71,16 +71,17 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
     }
   }
   const BodyState& s2 = data.partnerStates[pair.other - bodyCount];
-  const PartnerShape& shape = model.partners[pair.other - bodyCount].shape;
+  const Partner& partner = model.partners[pair.other - bodyCount];
+  const Real edgeRadius = edgeRadiusFor(partner, body.equivalentRadius);
   std::visit(Overloaded{[&](const Box& box) {
                           Ig2_RoundedMesh_Box_PressureGeom(*body.mesh, box, inBody(s2.position),
-                                                           R_BW * s2.orientation.toRotationMatrix(), motion, out,
-                                                           curvature);
+                                                           R_BW * s2.orientation.toRotationMatrix(), edgeRadius,
+                                                           motion, out, curvature);
                         },
                         [&](const Facet& facet) {
                           Ig2_RoundedMesh_Facet_PressureGeom(
                               *body.mesh, placeFacet(facet, R_BW * s2.orientation.toRotationMatrix(), inBody(s2.position)),
-                              motion, out, curvature);
+                              edgeRadius, motion, out, curvature);
                         },
                         [&](const Sphere& sphere) {
                           Ig2_RoundedMesh_Sphere_PressureGeom(
@@ -92,7 +93,7 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
                           planeGeometry(*body.mesh, wallPlane(wall, s2.position, s1.position), s1, R_BW, motion, out,
                                         curvature);
                         }},
-             shape);
+             partner.shape);
 }
 
 }  // namespace

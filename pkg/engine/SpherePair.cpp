@@ -29,7 +29,9 @@ PairResult resolveSpherePair(const ContactModel& model, const ContactData& data,
                    return spherePlaneGeom(radius, {local(p.point), p.normal}, motion, geom);
                  },
                  [&](const Box& b) {
-                   return spherePlaneGeom(radius, boxPlane(b, local(s2.position), s2.orientation.toRotationMatrix()),
+                   return spherePlaneGeom(radius,
+                                          boxPlane(b, local(s2.position), s2.orientation.toRotationMatrix(),
+                                                   edgeRadiusFor(other, radius)),
                                           motion, geom);
                  },
                  [&](const Facet& f) {

@@ -19,6 +19,8 @@ void weldFacetPartners(ContactModel& model, const std::vector<BodyState>& partne
     auto weld = std::make_shared<FacetWeld>(welds[f]);
     const Quaternionr toFacet = states[f]->orientation.conjugate();
     for (Vector3r& x : weld->outline) x = toFacet * (x - states[f]->position);
+    for (Vector3r& x : weld->outlineBeyond) x = toFacet * (x - states[f]->position);
+    for (Vector3r& x : weld->beyond) x = toFacet * (x - states[f]->position);
     facets[f]->weld = std::move(weld);
   }
 }

@@ -1,6 +1,9 @@
 #include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
 
 #include <algorithm>
+#include <optional>
+
+#include "pkg/geom/TriangleEdgeGeom.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -9,6 +12,29 @@ namespace {
 Real segmentDistance(const Vector2r& p, const Vector2r& a, const Vector2r& b) {
   const Real along = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), Real(0), Real(1));
   return (p - (a + along * (b - a))).norm();
+}
+
+// The side of the surface the body's centre (the origin) is on, seen from this facet: the side of its plane, unless
+// the centre lies behind the plane past an edge that is convex from the other side, and in front of the facets beyond
+// that edge: then it is outside a ridge (above a lifter's apex, past its plane's reach), on the other side.
+int surfaceSide(const PlacedFacet& facet, const Vector3r& normal) {
+  const Vector3r& origin = facet.corners[0];
+  const int planeSide = normal.dot(origin) > 0 ? 1 : 0;
+  const int other = 1 - planeSide;
+  const Vector3r centroid = (facet.corners[0] + facet.corners[1] + facet.corners[2]) / 3;
+  const int n = static_cast<int>(facet.outline.size());
+  for (int k = 0; k < n; ++k) {
+    const FacetWeld& weld = *facet.weld;
+    if (weld.outlineClosed[k][other] || !weld.outlineClosed[k][planeSide] || !facet.outlineBeyond[k].allFinite())
+      continue;
+    const Vector3r &a = facet.outline[k], &b = facet.outline[(k + 1) % n];
+    Vector3r beyondNormal = (b - a).cross(facet.outlineBeyond[k] - a);
+    if (beyondNormal.dot(centroid - a) > 0) beyondNormal = -beyondNormal;
+    const Vector3r pastEdge = normal.cross(b - a);  // in the plane, across the edge
+    const Real past = pastEdge.dot(-a) * pastEdge.dot(centroid - a);
+    if (past < 0 && beyondNormal.dot(-a) > 0) return other;
+  }
+  return planeSide;
 }
 
 }  // namespace
@@ -27,13 +53,13 @@ bool facetOwns(const std::array<Vector2r, 3>& corners, const FacetWeld& weld, co
   return true;
 }
 
-void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFacet& facet, const RelativeMotion& motion,
-                                        GeomOutput out, CurvatureModel model) {
+void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFacet& facet, Real edgeRadius,
+                                        const RelativeMotion& motion, GeomOutput out, CurvatureModel model) {
   const std::array<Vector3r, 3>& corners = facet.corners;
   const Vector3r normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
   // The body's side (FacetWeld's side 0: that of the normal of the corners' order); n12 points from the body (its
   // centre is body 1's origin) into the facet.
-  const int side = normal.dot(corners[0]) > 0 ? 1 : 0;
+  const int side = facet.weld ? surfaceSide(facet, normal) : (normal.dot(corners[0]) > 0 ? 1 : 0);
   ContactFace face;
   face.origin = corners[0];
   face.normal = side == 1 ? normal : Vector3r(-normal);
@@ -42,27 +68,60 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFac
   face.sheet = true;
   FaceOutline outline;
   const FacetWeld* weld = facet.weld;
-  if (weld) {
-    for (const Vector3r& x : facet.outline) outline.corners.push_back(faceCoordinates(face, x));
-    for (const SidePair& closed : weld->outlineClosed) outline.open.push_back(!closed[side]);
-    // The outline turns counter-clockwise about the normal, so clockwise about n12 on side 0.
-    if (side == 0) {
-      std::reverse(outline.corners.begin(), outline.corners.end());
-      std::reverse(outline.open.begin(), outline.open.end());
-      std::rotate(outline.open.begin(), outline.open.begin() + 1, outline.open.end());
-    }
-  } else {
+  if (!weld) {
     const ConvexPolygon triangle = ConvexPolygon::triangle(
         faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]), faceCoordinates(face, corners[2]));
     for (int i = 0; i < 3; ++i) outline.corners.push_back(triangle[i]);
+    face.faceOutline = &outline;
+    faceGeometry(mesh, face, motion, out, model);
+    return;
+  }
+  // The rounding of the edge from a to b, convex from the body's side, toward the facets beyond it (a corner of theirs
+  // off the edge): the outward normals of both faces, or none where the edge is not convex (or folds back on itself).
+  const Vector3r outward = -face.normal;
+  auto rounding = [&](const Vector3r& a, const Vector3r& b, const Vector3r& beyond) -> std::optional<RoundedFeature> {
+    if (!beyond.allFinite() || !(edgeRadius > 0)) return std::nullopt;
+    Vector3r other = (b - a).cross(beyond - a).normalized();
+    if (other.dot(corners[0] + corners[1] + corners[2] - 3 * a) > 0) other = -other;
+    const Real cosine = outward.dot(other);
+    if (!(1 + cosine > 1e-3)) return std::nullopt;
+    const Vector3r axisOffset = edgeRadius * (outward + other) / (1 + cosine);
+    return RoundedFeature{a - axisOffset, b - axisOffset, edgeRadius, {outward, other}};
+  };
+  const int n = static_cast<int>(facet.outline.size());
+  for (int k = 0; k < n; ++k) {
+    outline.corners.push_back(faceCoordinates(face, facet.outline[k]));
+    const bool open = !weld->outlineClosed[k][side];
+    outline.open.push_back(open);
+    const std::optional<RoundedFeature> strip =
+        open ? rounding(facet.outline[k], facet.outline[(k + 1) % n], facet.outlineBeyond[k]) : std::nullopt;
+    // The face stops where the strip's cylinder touches it: rho tan(theta / 2) short of the edge.
+    outline.inset.push_back(strip ? edgeRadius * strip->faceNormals[0].cross(strip->faceNormals[1]).norm() /
+                                        (1 + strip->faceNormals[0].dot(strip->faceNormals[1]))
+                                  : 0);
+    // A cap comes round a rounded edge only past the rounding's axis.
+    outline.slack.push_back(strip ? (strip->start - facet.outline[k]).norm() : 0);
+  }
+  // The outline turns counter-clockwise about the normal, so clockwise about n12 on side 0.
+  if (side == 0) {
+    std::reverse(outline.corners.begin(), outline.corners.end());
+    auto reverseEdges = [](auto& edges) {  // edge i ran from corner i to i + 1
+      std::reverse(edges.begin(), edges.end());
+      std::rotate(edges.begin(), edges.begin() + 1, edges.end());
+    };
+    reverseEdges(outline.open);
+    reverseEdges(outline.inset);
+    reverseEdges(outline.slack);
   }
   face.faceOutline = &outline;
-  if (weld && weld->panelSize > 1) {
-    const std::array<Vector2r, 3> own{faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]),
-                                      faceCoordinates(face, corners[2])};
-    face.owns = [&own, weld](const Vector2r& p) { return facetOwns(own, *weld, p); };
-  }
+  const std::array<Vector2r, 3> own{faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]),
+                                    faceCoordinates(face, corners[2])};
+  if (weld->panelSize > 1) face.owns = [&own, weld](const Vector2r& p) { return facetOwns(own, *weld, p); };
   faceGeometry(mesh, face, motion, out, model);
+  for (int e = 0; e < 3; ++e)
+    if (weld->ownsStrip[e] && !weld->edgeClosed[e][side])
+      if (const std::optional<RoundedFeature> strip = rounding(corners[e], corners[(e + 1) % 3], facet.beyond[e]))
+        featureGeometry(mesh, *strip, motion, out, model);
 }
 
 }  // namespace roundedmesh

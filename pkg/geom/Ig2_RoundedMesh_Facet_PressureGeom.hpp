@@ -6,7 +6,10 @@
 // A welded facet (FacetSurface.hpp) is a member of a panel of coplanar facets: S is clipped to the panel's outline,
 // so that a body across a flat seam meets one plane, and the facet keeps the contacts whose c_eff it holds (the
 // panel's other members keep the rest); a seam where the surface goes on toward the body is no edge a cap can come
-// round.
+// round. An edge between panels that is convex from the body's side (a lifter's ridge, a box's edge seen from
+// outside) is rounded by edgeRadius rho: the faces stop rho tan(theta / 2) short of it (theta the angle between their
+// normals) and the cylinder strip between them pushes (TriangleEdgeGeom.hpp), computed by the facet that owns it.
+// Free edges and the corners of a facet surface stay sharp.
 // Inputs in body 1's frame: the facet placed there, and the facet's motion relative to body 1.
 #pragma once
 
@@ -17,8 +20,9 @@
 
 namespace roundedmesh {
 
-void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFacet& facet, const RelativeMotion& motion,
-                                        GeomOutput out, CurvatureModel model = CurvatureModel::Mean);
+void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFacet& facet, Real edgeRadius,
+                                        const RelativeMotion& motion, GeomOutput out,
+                                        CurvatureModel model = CurvatureModel::Mean);
 
 // Whether point p of the facet's plane, in the coordinates `inPlane` gives, belongs to the facet among its panel's
 // members: inside it, or on an edge or at a corner it owns (FacetWeld). Within a billionth of the facet's size of an

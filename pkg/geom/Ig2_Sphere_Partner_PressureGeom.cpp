@@ -47,13 +47,17 @@ GeomTest spherePlaneGeom(Real radius, const Plane& plane, const RelativeMotion& 
   return wholeCircle(-plane.normal, -height * plane.normal, radius - height, radius, motion, geom);
 }
 
-Plane boxPlane(const Box& box, const Vector3r& centre, const Matrix3r& orientation) {
+Plane boxPlane(const Box& box, const Vector3r& centre, const Matrix3r& orientation, Real edgeRadius) {
   const Vector3r local = orientation.transpose() * -centre;  // the sphere's centre in the box's frame
   const Vector3r& h = box.halfExtents;
-  const Vector3r nearest = local.cwiseMax(-h).cwiseMin(h);
-  if (nearest != local) {  // outside: the nearest point differs from the sphere's centre (the origin)
-    const Vector3r point = centre + orientation * nearest;
-    return {point, -point.normalized()};
+  const Real rho = std::min(edgeRadius, h.minCoeff());
+  // The rounded box is the box shrunk by rho, grown by a ball of rho: its point nearest a centre outside the shrunk
+  // box lies rho beyond the shrunk box's nearest point.
+  const Vector3r nearest = local.cwiseMax(-(h.array() - rho).matrix()).cwiseMin((h.array() - rho).matrix());
+  if (nearest != local) {
+    const Vector3r out = (local - nearest).normalized();
+    const Vector3r point = centre + orientation * (nearest + rho * out);
+    return {point, orientation * out};
   }
   // Sunk into the box: pushed out through the face it is least deep behind.
   int axis;

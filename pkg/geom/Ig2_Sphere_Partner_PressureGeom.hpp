@@ -27,10 +27,11 @@ GeomTest sphereSphereGeom(Real radius, const Vector3r& centre2, Real radius2, co
 // plane: in the sphere's frame, normal toward the sphere.
 GeomTest spherePlaneGeom(Real radius, const Plane& plane, const RelativeMotion& motion, PressureGeom& geom);
 
-// The plane a Box (centre, orientation: box frame -> sphere frame) or a Facet (placed in the sphere's frame)
-// presents to a sphere centred at the origin: through the partner's point nearest the centre. A welded Facet
-// presents its panel's (FacetSurface.hpp), and nothing (nullopt) when that point belongs to another member.
-Plane boxPlane(const Box& box, const Vector3r& centre, const Matrix3r& orientation);
+// The plane a Box (centre, orientation: box frame -> sphere frame; its edges and corners rounded by edgeRadius [m],
+// at most its smallest half-size) or a Facet (placed in the sphere's frame) presents to a sphere centred at the
+// origin: through the partner's point nearest the centre. A welded Facet presents its panel's (FacetSurface.hpp),
+// and nothing (nullopt) when that point belongs to another member.
+Plane boxPlane(const Box& box, const Vector3r& centre, const Matrix3r& orientation, Real edgeRadius);
 std::optional<Plane> facetPlane(const PlacedFacet& facet);
 
 }  // namespace roundedmesh

@@ -10,15 +10,20 @@
 namespace roundedmesh {
 namespace {
 
-// The polygon clipped to the outline moved by `offset`: by the edges it crosses only, so that a panel's outline of
-// many corners leaves a small polygon small.
+// The polygon clipped to the outline moved by `offset`, each edge moved inward by its inset: by the edges it crosses
+// only, so that a panel's outline of many corners leaves a small polygon small.
 ConvexPolygon clippedToOutline(const ConvexPolygon& polygon, const FaceOutline& outline, const Vector2r& offset) {
   ConvexPolygon buffers[2];
   int spare = 0;
   const ConvexPolygon* current = &polygon;
   const int n = static_cast<int>(outline.corners.size());
   for (int i = 0; i < n && !current->empty(); ++i) {
-    const Vector2r a = outline.corners[i] + offset, b = outline.corners[(i + 1) % n] + offset;
+    Vector2r a = outline.corners[i] + offset, b = outline.corners[(i + 1) % n] + offset;
+    if (!outline.inset.empty() && outline.inset[i] > 0) {
+      const Vector2r along = (b - a).normalized(), inward(-along.y(), along.x());
+      a += outline.inset[i] * inward;
+      b += outline.inset[i] * inward;
+    }
     bool crosses = false;
     for (int k = 0; k < current->size() && !crosses; ++k) crosses = cross2(b - a, (*current)[k] - a) < 0;
     if (!crosses) continue;
@@ -80,7 +85,8 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
 
 namespace {
 
-// How far p, inside a convex outline, lies from its nearest open edge (infinity if none is open).
+// How far p, inside a convex outline, lies from its nearest open edge, with the edge's slack (infinity if none is
+// open).
 Real distanceToOpenEdge(const FaceOutline& outline, const Vector2r& p) {
   Real nearest = std::numeric_limits<Real>::infinity();
   const int n = static_cast<int>(outline.corners.size());
@@ -88,7 +94,7 @@ Real distanceToOpenEdge(const FaceOutline& outline, const Vector2r& p) {
     if (!outline.open.empty() && !outline.open[i]) continue;
     const Vector2r a = outline.corners[i], b = outline.corners[(i + 1) % n];
     const Real along = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), Real(0), Real(1));
-    nearest = std::min(nearest, (p - (a + along * (b - a))).norm());
+    nearest = std::min(nearest, (p - (a + along * (b - a))).norm() + (outline.slack.empty() ? 0 : outline.slack[i]));
   }
   return nearest;
 }
@@ -120,9 +126,12 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
       // The line along n12 through c_eff meets triangle t (c_eff is in its projection S) `behind` the sheet, or in
       // front of it, where only the cap's bulge crosses the sheet and c_eff lies between the triangle and the cap.
       const Vector3r onSheet = planePoint(geom, geom.effectivePoint);
-      const Real behind = lineToTriangle(mesh, t, onSheet, face.normal);
+      const Real toEdge = distanceToOpenEdge(*face.faceOutline, faceCoordinates(face, onSheet));
+      // Only a body that reaches an open edge from c_eff can have come round it.
+      const bool edgeInReach = toEdge < 2 * mesh.sphereBoundRadius();
+      const Real behind = edgeInReach ? lineToTriangle(mesh, t, onSheet, face.normal) : 0;
       if ((behind > 0 && !pathInsideBody(mesh, t, onSheet + behind * face.normal, onSheet)) ||
-          !(geom.effectiveOverlap <= distanceToOpenEdge(*face.faceOutline, faceCoordinates(face, onSheet))))
+          !(geom.effectiveOverlap <= toEdge))
         result = {Rejection::ThroughBody};
     }
     out.add(result, geom);

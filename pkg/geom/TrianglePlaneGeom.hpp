@@ -20,10 +20,13 @@ namespace roundedmesh {
 
 // The outline of a finite face: corners counter-clockwise about n12, in (t1, t2) coordinates relative to the face's
 // origin; for a sheet, whether a cap can come round each edge (corners i, i + 1): a free or convex edge, not a seam
-// where the surface goes on toward the body (FacetSurface.hpp).
+// where the surface goes on toward the body (FacetSurface.hpp); and where a rounded edge trims the face.
 struct FaceOutline {
   std::vector<Vector2r> corners;
-  std::vector<bool> open;  // empty: every edge
+  std::vector<bool> open;    // empty: every edge
+  std::vector<Real> inset;   // how far S stops short of each edge [m] (a rounded edge takes over there); empty: 0
+  std::vector<Real> slack;   // for the sheet rule, how much farther a cap must reach to come round each edge [m]:
+                             // the depth of a rounded edge's axis behind it; empty: 0
 };
 
 // A face of the partner in body 1's frame: a point on it, the normal n12 pointing into the partner, and
@@ -60,7 +63,9 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
 // (a body resting on one face of a ridge of Facets, or wrapped around it), and the candidate is rejected as
 // ThroughBody. So is a cap deeper behind a sheet than c_eff lies from the sheet's nearest open edge: the cap has come
 // round the edge (a lifter's ridge cutting into a body straddling it), and moving it past the edge parts it from the
-// sheet sooner than pushing it back through. A seam where the surface goes on toward the body is no such edge.
+// sheet sooner than pushing it back through. A seam where the surface goes on toward the body is no such edge, and a
+// cap whose c_eff lies farther from every open edge than the body is wide cannot have come round one: its path is not
+// asked for (a body pressed deep into a large Facet, or into a drum's wall, meets it as a Wall).
 void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
                   CurvatureModel model = CurvatureModel::Mean);
 

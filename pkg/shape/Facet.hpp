@@ -30,16 +30,20 @@ inline std::array<Vector3r, 3> facetCorners(const Facet& facet, const Vector3r& 
 // welded, its panel's outline, with the weld's flags.
 struct PlacedFacet {
   std::array<Vector3r, 3> corners;
-  std::vector<Vector3r> outline;  // empty for a facet alone
+  std::vector<Vector3r> outline, outlineBeyond;  // empty for a facet alone
+  std::array<Vector3r, 3> beyond;
   const FacetWeld* weld = nullptr;
 };
 
 inline PlacedFacet placeFacet(const Facet& facet, const Matrix3r& rotation, const Vector3r& translation) {
   PlacedFacet placed;
-  for (int i = 0; i < 3; ++i) placed.corners[i] = rotation * facet.vertices[i] + translation;
+  auto place = [&](const Vector3r& x) -> Vector3r { return rotation * x + translation; };
+  for (int i = 0; i < 3; ++i) placed.corners[i] = place(facet.vertices[i]);
   if (facet.weld) {
     placed.weld = facet.weld.get();
-    for (const Vector3r& x : facet.weld->outline) placed.outline.push_back(rotation * x + translation);
+    for (const Vector3r& x : facet.weld->outline) placed.outline.push_back(place(x));
+    for (const Vector3r& x : facet.weld->outlineBeyond) placed.outlineBeyond.push_back(place(x));
+    for (int i = 0; i < 3; ++i) placed.beyond[i] = place(facet.weld->beyond[i]);
   }
   return placed;
 }

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
-#include <numeric>
 #include <unordered_map>
+
+#include "pkg/math/ConvexHull.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -59,26 +61,6 @@ std::vector<std::array<int, 3>> weldVertices(const std::vector<std::array<Vector
   return indices;
 }
 
-// The convex hull of `points`, counter-clockwise, without corners on a straight stretch (monotone chain).
-std::vector<Vector2r> convexHull(std::vector<Vector2r> points, Real scale) {
-  std::sort(points.begin(), points.end(),
-            [](const Vector2r& a, const Vector2r& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
-  std::vector<Vector2r> hull(2 * points.size());
-  const Real straight = kFlat * scale * scale;
-  auto turnsLeft = [&](const Vector2r& a, const Vector2r& b, const Vector2r& c) { return cross2(b - a, c - a) > straight; };
-  int k = 0;
-  for (size_t i = 0; i < points.size(); ++i) {  // lower hull
-    while (k >= 2 && !turnsLeft(hull[k - 2], hull[k - 1], points[i])) --k;
-    hull[k++] = points[i];
-  }
-  for (int i = static_cast<int>(points.size()) - 2, lower = k + 1; i >= 0; --i) {  // upper hull
-    while (k >= lower && !turnsLeft(hull[k - 2], hull[k - 1], points[i])) --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(std::max(k - 1, 0));
-  return hull;
-}
-
 Real polygonArea(const std::vector<Vector2r>& polygon) {
   Real twice = 0;
   for (size_t i = 0; i < polygon.size(); ++i) twice += cross2(polygon[i], polygon[(i + 1) % polygon.size()]);
@@ -90,6 +72,8 @@ Real segmentDistance(const Vector2r& p, const Vector2r& a, const Vector2r& b) {
   const Real along = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), Real(0), Real(1));
   return (p - (a + along * (b - a))).norm();
 }
+
+constexpr Real kNone = std::numeric_limits<Real>::infinity();
 
 struct EdgeSide {
   int facet, edge;
@@ -128,6 +112,8 @@ std::vector<FacetWeld> weldFacets(const std::vector<std::array<Vector3r, 3>>& fa
 
   // Across each edge: which way each facet beyond goes, seen from this one; flat neighbours make panels.
   std::vector<std::array<std::vector<int>, 3>> flatAcross(count);
+  std::vector<std::array<int, 3>> across(count, {-1, -1, -1});  // the facet beyond whose corner is `beyond`
+  std::vector<std::array<Real, 3>> sharpest(count, {kNone, kNone, kNone});
   for (const auto& [key, sides] : edges)
     for (const EdgeSide& here : sides)
       for (const EdgeSide& there : sides) {
@@ -144,7 +130,16 @@ std::vector<FacetWeld> weldFacets(const std::vector<std::array<Vector3r, 3>>& fa
         SidePair& closed = welds[here.facet].edgeClosed[here.edge];
         closed[0] = closed[0] || flat || up > 0;
         closed[1] = closed[1] || flat || up < 0;
-        if (flat) flatAcross[here.facet][here.edge].push_back(there.facet);
+        if (flat) {
+          flatAcross[here.facet][here.edge].push_back(there.facet);
+          continue;
+        }
+        const Real turn = std::abs(std::atan2(up, u.dot(outward)));
+        if (turn < sharpest[here.facet][here.edge]) {  // of several facets beyond (a plate on a seam), the flattest
+          sharpest[here.facet][here.edge] = turn;
+          welds[here.facet].beyond[here.edge] = facets[there.facet][(there.edge + 2) % 3];
+          across[here.facet][here.edge] = there.facet;
+        }
       }
 
   // Panels: a flat component of the surface whose union is convex is one; another is split into convex panels grown
@@ -181,7 +176,7 @@ std::vector<FacetWeld> weldFacets(const std::vector<std::array<Vector3r, 3>>& fa
         scale = std::max(scale, sizes[f]);
         for (const Vector3r& x : facets[f]) points.push_back(inPlane(x));
       }
-      return convexHull(points, scale);
+      return convexHull(points, kFlat * scale * scale);
     };
     auto convexUnion = [&](const std::vector<Vector2r>& hull, Real area, Real scale) {
       return polygonArea(hull) <= area * (1 + kFlat) + kFlat * scale * scale &&
@@ -225,6 +220,7 @@ std::vector<FacetWeld> weldFacets(const std::vector<std::array<Vector3r, 3>>& fa
     // What lies beyond each stretch of the outline, from the member edges on it (those with no member across).
     std::vector<SidePair> closed(hull.size(), SidePair{true, true});
     std::vector<bool> covered(hull.size(), false);
+    std::vector<Vector3r> beyond(hull.size(), Vector3r::Constant(kNaN));
     const Real onLine = kFlat * scale + tolerance;
     for (int f : members)
       for (int e = 0; e < 3; ++e) {
@@ -239,6 +235,9 @@ std::vector<FacetWeld> weldFacets(const std::vector<std::array<Vector3r, 3>>& fa
           const SidePair& edge = welds[f].edgeClosed[e];
           closed[k][0] = closed[k][0] && edge[sameSide ? 0 : 1];
           closed[k][1] = closed[k][1] && edge[sameSide ? 1 : 0];
+          // A stretch whose member edges do not all have a facet beyond has none (no strip, no trim).
+          const Vector3r& there = welds[f].beyond[e];
+          beyond[k] = !covered[k] || beyond[k].allFinite() ? there : Vector3r::Constant(kNaN);
           covered[k] = true;
         }
       }
@@ -252,10 +251,13 @@ std::vector<FacetWeld> weldFacets(const std::vector<std::array<Vector3r, 3>>& fa
       const bool sameSide = normals[f].dot(normals[seed]) > 0;
       for (const Vector2r& x : hull) weld.outline.push_back(s[0] + x.x() * e1 + x.y() * e2);
       weld.outlineClosed = closed;
+      weld.outlineBeyond = beyond;
       if (!sameSide) {  // counter-clockwise about this member's normal, sides named from it
         std::reverse(weld.outline.begin(), weld.outline.end());
         std::reverse(weld.outlineClosed.begin(), weld.outlineClosed.end());
         std::rotate(weld.outlineClosed.begin(), weld.outlineClosed.begin() + 1, weld.outlineClosed.end());
+        std::reverse(weld.outlineBeyond.begin(), weld.outlineBeyond.end());
+        std::rotate(weld.outlineBeyond.begin(), weld.outlineBeyond.begin() + 1, weld.outlineBeyond.end());
         for (SidePair& side : weld.outlineClosed) std::swap(side[0], side[1]);
       }
       for (int e = 0; e < 3; ++e)
@@ -266,6 +268,9 @@ std::vector<FacetWeld> weldFacets(const std::vector<std::array<Vector3r, 3>>& fa
           if (panelOf[g] == seed && g < f) weld.ownsCorner[i] = false;
     }
   }
+  // Each rounded edge between two panels is computed once, by the facets on the side of the panel of lower index.
+  for (int f = 0; f < count; ++f)
+    for (int e = 0; e < 3; ++e) welds[f].ownsStrip[e] = across[f][e] >= 0 && panelOf[f] < panelOf[across[f][e]];
   return welds;
 }
 

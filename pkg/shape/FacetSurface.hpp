@@ -8,15 +8,20 @@
 //     index), with the panel's outline. A body meets a panel as one finite plane: its contact is the plane's
 //     wherever the panel is, as a Wall's, and each triangle contact is kept by exactly one member, the one that
 //     holds its c_eff (ownsEdge and ownsCorner settle the points the members share).
+//   - at each edge between two panels, the corner of the facet beyond, from which the engine finds the fold and, where
+//     the edge is convex for a body, rounds it (TriangleEdgeGeom.hpp): computed once, by the side of lower panel index.
 // All in the frame the corners are given in; lengths [m].
 #pragma once
 
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "pkg/common/Types.hpp"
 
 namespace roundedmesh {
+
+constexpr Real kNaN = std::numeric_limits<Real>::quiet_NaN();
 
 // A side of a facet: 0 that of its normal (c1 - c0) x (c2 - c0), 1 the other.
 using SidePair = std::array<bool, 2>;
@@ -29,6 +34,12 @@ struct FacetWeld {
   std::vector<Vector3r> outline;        // the panel's outline, counter-clockwise about the normal; the facet alone: its
                                         // corners
   std::vector<SidePair> outlineClosed;  // outline edge i (outline[i], outline[i + 1]): as edgeClosed
+  std::vector<Vector3r> outlineBeyond;  // outline edge i: a corner of the facets beyond it, off its line (NaN: none,
+                                        // or not one plane)
+  std::array<Vector3r, 3> beyond{Vector3r::Constant(kNaN), Vector3r::Constant(kNaN), Vector3r::Constant(kNaN)};
+                                        // edge i: the corner, off the edge, of the facet beyond that turns least (NaN:
+                                        // a free edge or a flat seam)
+  std::array<bool, 3> ownsStrip{};      // edge i: where it is a convex edge, this facet computes its rounding
   int panel = -1;                       // index of the panel (the lowest index of its members)
   int panelSize = 1;                    // how many facets it has
 };

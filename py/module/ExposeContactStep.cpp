@@ -35,9 +35,10 @@ class SceneContacts {
   void addBody(int id, const BodyMesh& mesh, const HertzMaterial& material) {
     model_.bodies.push_back(roundedBody(id, mesh, material));
   }
-  void addPartner(const bp::object& body, const HertzMaterial& material) {
+  // edgeRadius [m]: what its convex edges and corners are rounded by; negative: the default (edgeRadiusFor).
+  void addPartner(const bp::object& body, const HertzMaterial& material, Real edgeRadius) {
     const int id = bp::extract<int>(body.attr("id"));
-    model_.partners.push_back({id, yadeShape(body, id), material});
+    model_.partners.push_back({id, yadeShape(body, id), material, false, edgeRadius});
   }
   // A sphere body (rm.add_sphere): a YADE Sphere whose contacts with every partner the engine computes too.
   void addSphere(const bp::object& body, const HertzMaterial& material) {
@@ -374,23 +375,20 @@ BodyState partnerState(const bp::object& partner, int id) {
 // third and fourth items list the wrench on each partner.
 bp::tuple partnerContact(const BodyMesh& mesh, const Vector3r& pos, const Quaternionr& ori, const bp::object& partner,
                          const HertzMaterial& meshMaterial, const HertzMaterial& partnerMaterial, const Vector3r& vel,
-                         const Vector3r& angVel, bool details, const EngineOptions& options) {
+                         const Vector3r& angVel, bool details, Real edgeRadius, const EngineOptions& options) {
   const RoundedBody body = roundedBody(0, mesh, meshMaterial);
   const BodyState state = bodyState(pos, ori, vel, angVel, 0);
-  if (PyObject_HasAttrString(partner.ptr(), "id")) {
-    const int id = bp::extract<int>(partner.attr("id"));
-    return asTuple(roundedmesh::partnerContact(body, state, yadeShape(partner, id), partnerState(partner, id),
-                                               partnerMaterial, options, details));
-  }
+  const bool one = PyObject_HasAttrString(partner.ptr(), "id");
   std::vector<Partner> partners;
   std::vector<BodyState> states;
-  for (bp::stl_input_iterator<bp::object> it(partner), end; it != end; ++it) {
+  for (bp::stl_input_iterator<bp::object> it(one ? bp::object(bp::make_tuple(partner)) : partner), end; it != end; ++it) {
     const int id = bp::extract<int>((*it).attr("id"));
-    partners.push_back({id, yadeShape(*it, id), partnerMaterial});
+    partners.push_back({id, yadeShape(*it, id), partnerMaterial, false, edgeRadius});
     states.push_back(partnerState(*it, id));
   }
   if (partners.empty()) throw std::invalid_argument("partner: an empty sequence; give a body or a list of bodies");
   const PairEvaluation e = surfaceContact(body, state, partners, states, options, details);
+  if (one) return asTuple(e);
   bp::list forces, torques;
   for (const Wrench& w : e.onPartners) {
     forces.append(w.force);
@@ -420,7 +418,8 @@ void exposeContactStep() {
   bp::class_<SceneContacts, boost::noncopyable>(
       "SceneContacts", "The contacts of one scene and its step (used by roundedmesh.scene).")
       .def("add_body", &SceneContacts::addBody, (bp::arg("id"), bp::arg("mesh"), bp::arg("material")))
-      .def("add_partner", &SceneContacts::addPartner, (bp::arg("body"), bp::arg("material")))
+      .def("add_partner", &SceneContacts::addPartner,
+           (bp::arg("body"), bp::arg("material"), bp::arg("edge_radius") = -1.0))
       .def("add_sphere", &SceneContacts::addSphere, (bp::arg("body"), bp::arg("material")))
       .def("set_options", &SceneContacts::setOptions, bp::arg("options"))
       .add_property("options", bp::make_function(&SceneContacts::options, bp::return_value_policy<bp::copy_const_reference>()))

@@ -252,6 +252,31 @@ def set_material(body_id, material):
 
 
 
+def set_edge_radius(body_ids, radius):
+    """Rounds the convex edges and corners of the contact partners `body_ids` (a body id or a list of them: Boxes, or
+    the Facets of a surface) by `radius` [m] from the next step on: a rounded body meets such an edge as Hertz's
+    contact with a cylinder of that radius, and a Box's corner as one with a sphere (doc/physics.md, "What each
+    partner's surface is"); 0 makes them sharp. By default a partner's edges are rounded by a tenth of the
+    volume-equivalent radius of the body touching it, the deepest a Hertz contact is meant to reach. Give one radius to
+    every Facet of a surface. ValueError, and nothing changes, for a radius that is negative or not finite or a body
+    that is not a Box or Facet partner (Walls and Spheres have no edges)."""
+    ids = [body_ids] if isinstance(body_ids, numbers.Integral) else list(body_ids)
+    try:
+        radius = float(radius)
+    except (TypeError, ValueError):
+        raise TypeError(f"radius: expected a number, got {radius!r}") from None
+    if not (math.isfinite(radius) and radius >= 0):
+        raise ValueError(f"radius: must be finite and not negative, got {radius:g} m")
+    for body_id in ids:
+        body = _existing_body(body_id, "body_ids")
+        if not _tag(f"partner.{body.id}") or partner_kind(body) not in ("Box", "Facet"):
+            raise ValueError(f"body_ids: body {body.id} is not a Box or Facet contact partner (assign_material makes "
+                             "one); only their edges are rounded")
+    for body_id in ids:
+        _set_tag(f"edge_radius.{int(body_id)}", repr(radius))
+    _new_revision()
+
+
 def rounded_bodies():
     """{body id: Mesh} of the current scene's rounded bodies."""
     return {int(i): _load_mesh(json.loads(record)["mesh"]) for i, record in _tags_named("body").items()

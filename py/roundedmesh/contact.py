@@ -59,16 +59,18 @@ def sphere_contact(mesh, pos, ori, centre, radius, mesh_material, sphere_materia
 
 
 def partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel=_ZERO, ang_vel=_ZERO, details=False,
-                    options=None, **named):
+                    edge_radius=None, options=None, **named):
     """(force on the body, torque on it, force on the partner, torque on it about its position) of a rounded body
     (Mesh `mesh` placed at pos, turned by ori) against `partner`, a YADE Body with a Wall, Box, Facet or Sphere shape
     at its own pose and velocity (it need not be in O.bodies), made of `partner_material`. What the engine computes
     for that pair in a step. `partner` may also be a list of such bodies, all of `partner_material`: a surface, its
     Facets welded as in a scene (doc/physics.md, "What each partner's surface is"); then the body's force and torque
     are the sums, and the third and fourth items list the force and torque on each partner. With details=True a fifth
-    item lists the triangle contacts as dicts (as triangle_contacts' rows)."""
+    item lists the triangle contacts as dicts (as triangle_contacts' rows). edge_radius [m]: what the partners' convex
+    edges and corners are rounded by, as rm.set_edge_radius gives it in a scene (None: its default, a tenth of the
+    body's volume-equivalent radius)."""
     evaluated = _partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel, ang_vel, details,
-                                 engine_options(options, **named))
+                                 -1.0 if edge_radius is None else float(edge_radius), engine_options(options, **named))
     return evaluated if details else evaluated[:4]
 
 

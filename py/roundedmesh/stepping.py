@@ -62,7 +62,11 @@ class _SceneState:
             body = _body_or_none(body_id)
             if body is not None:
                 materials.append(_material(json.loads(record)))
-                (self.contacts.add_sphere if kind == "sphere" else self.contacts.add_partner)(body, materials[-1])
+                if kind == "sphere":
+                    self.contacts.add_sphere(body, materials[-1])
+                else:
+                    edge_radius = _tag(f"edge_radius.{body_id}")
+                    self.contacts.add_partner(body, materials[-1], float(edge_radius) if edge_radius else -1.0)
                 self.partner_ids.append(body_id)
         self.materials = materials
         self.options = None
@@ -146,6 +150,7 @@ def _forget(body_ids):
         _set_tag(f"body.{body_id}", "")
         _set_tag(f"partner.{body_id}", "")
         _set_tag(f"sphere.{body_id}", "")
+        _set_tag(f"edge_radius.{body_id}", "")
     _new_revision()
 
 

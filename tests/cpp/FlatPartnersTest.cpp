@@ -41,21 +41,28 @@ TEST(FlatPartners, ABoxOfAnyThicknessActsAsTheWallOfItsFace) {
   }
 }
 
-// Beyond a Box's edge the body meets two faces, each over its own rectangle; above the top, the side faces do not
+// The Box's edges sharp (rounding 0), as a Box's faces alone make them.
+Wrench againstSharp(const BodyMesh& mesh, const BodyState& state, const PartnerShape& partner) {
+  Partner sharp{0, partner, kFloor};
+  sharp.edgeRadius = 0;
+  return surfaceContact(roundedBody(0, mesh, kRubber), state, {sharp}, {at(Vector3r::Zero())}, EngineOptions()).onFirst;
+}
+
+// Beyond a sharp Box edge the body meets two faces, each over its own rectangle; above the top, the side faces do not
 // touch it, however close its centre comes to their planes.
 TEST(FlatPartners, ABoxMeetsTheFacesItsCentreIsOutside) {
   const BodyMesh ball(icosphere(0.025, 3));
   const Box box{Vector3r(0.1, 0.1, 0.1)};
   // Centre above the top, 1 mm inside the +x side's plane: the top alone, as a Wall.
   const BodyState above = at(Vector3r(0.099, 0, 0.124));
-  const Wrench top = against(ball, above, box, at(Vector3r::Zero()));
+  const Wrench top = againstSharp(ball, above, box);
   EXPECT_GT(top.force.z(), 0.1);
   EXPECT_NEAR(top.force.x(), 0, 1e-9 * top.force.norm());
   // Beyond the edge at 45 degrees, 5 mm deep: both faces push alike, within 1 % (the icosphere's triangles are not
   // symmetric about the edge's bisector). An edge is sharp: a face pushes once its contact circle reaches it, here past
   // 3.2 mm (doc/physics.md).
   const Vector3r edge(0.1, 0, 0.1), out = Vector3r(1, 0, 1).normalized();
-  const Wrench both = against(ball, at(edge + 0.02 * out), box, at(Vector3r::Zero()));
+  const Wrench both = againstSharp(ball, at(edge + 0.02 * out), box);
   EXPECT_GT(both.force.x(), 0.01);
   EXPECT_NEAR(both.force.x(), both.force.z(), 0.01 * both.force.norm());
 }
@@ -74,7 +81,7 @@ TEST(FlatPartners, AFacetPushesOnlyWhereTheBodyReachesIt) {
   const std::array<Vector3r, 3> corners = {-0.001 * up - 0.01 * across - 0.005 * along,
                                            -0.001 * up + 0.01 * across - 0.005 * along, -0.001 * up + 0.006 * along};
   std::vector<PressureGeom> geoms;
-  Ig2_RoundedMesh_Facet_PressureGeom(ring.shape(), PlacedFacet{corners, {}, nullptr}, RelativeMotion(),
+  Ig2_RoundedMesh_Facet_PressureGeom(ring.shape(), PlacedFacet{corners, {}, {}, {}, nullptr}, 0, RelativeMotion(),
                                      GeomOutput(geoms));
   EXPECT_TRUE(geoms.empty());
 
@@ -85,7 +92,7 @@ TEST(FlatPartners, AFacetPushesOnlyWhereTheBodyReachesIt) {
   face.tangent2 = face.normal.cross(face.tangent1);
   const ConvexPolygon triangle = ConvexPolygon::triangle(
       faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]), faceCoordinates(face, corners[2]));
-  const FaceOutline outline{{triangle[0], triangle[1], triangle[2]}, {}};
+  const FaceOutline outline{{triangle[0], triangle[1], triangle[2]}, {}, {}, {}};
   face.faceOutline = &outline;
   faceGeometry(ring.shape(), face, RelativeMotion(), GeomOutput(geoms));
   ASSERT_FALSE(geoms.empty());

@@ -94,7 +94,7 @@ TEST(SpherePair, DampingIsEq7sTermWithMeanConstant) {
   EXPECT_EQ(force(-1e3), 0);
 }
 
-// Against a Wall, a Box (face, edge) and a Facet the combined radius is the sphere's own: F = (4/3) E* sqrt(r)
+// Against a Wall, a Box (face, rounded edge) and a Facet the combined radius is the sphere's own: F = (4/3) E* sqrt(r)
 // delta^3/2 along the line from the nearest point of the partner. Tolerance as above.
 TEST(SpherePair, FlatPartnersUseTheSphereRadius) {
   const Real r = 0.01, overlap = 3e-4;
@@ -114,9 +114,13 @@ TEST(SpherePair, FlatPartnersUseTheSphereRadius) {
   // Over the middle of the top face, and beyond an edge (the nearest point on the edge, along the diagonal).
   check(box, test::at(Vector3r(1, 1, 1), turn), Vector3r(1, 1, 1) + turn * Vector3r(0, 0, 0.05 + r - overlap),
         turn * Vector3r::UnitZ());
+  // The edge is rounded by a tenth of the sphere's radius (edgeRadiusFor): its nearest point lies rho beyond the axis
+  // of the rounding, rho behind both faces.
   const Vector3r diagonal = Vector3r(1, 0, 1).normalized();
+  const Real rho = kDeepestOverlap * r;
   check(box, test::at(Vector3r(1, 1, 1), turn),
-        Vector3r(1, 1, 1) + turn * (Vector3r(0.1, 0, 0.05) + (r - overlap) * diagonal), turn * diagonal);
+        Vector3r(1, 1, 1) + turn * (Vector3r(0.1 - rho, 0, 0.05 - rho) + (rho + r - overlap) * diagonal),
+        turn * diagonal);
   const Facet facet{{Vector3r(-0.1, -0.1, 0), Vector3r(0.1, -0.1, 0), Vector3r(0, 0.1, 0)}, nullptr};
   check(facet, test::at(Vector3r(0, 0, 2)), Vector3r(0.01, 0, 2 - r + overlap), -Vector3r::UnitZ());
 }
