@@ -41,7 +41,7 @@ void Ig2_RoundedMesh_Box_PressureGeom(const RoundedMesh& mesh, const Box& box, c
     // Counter-clockwise about n12.
     const Vector2r e1 = corners[1] - corners[0], e2 = corners[2] - corners[0];
     if (e1.x() * e2.y() - e1.y() * e2.x() < 0) std::swap(corners[1], corners[3]);
-    const FaceOutline outline{{corners.begin(), corners.end()}, {}, {}, {}};
+    const FaceOutline outline({corners.begin(), corners.end()});
     face.faceOutline = &outline;
     faceGeometry(mesh, face, motion, out, model);
   }

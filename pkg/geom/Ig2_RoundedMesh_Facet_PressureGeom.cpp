@@ -66,57 +66,67 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFac
   face.tangent1 = face.normal.unitOrthogonal();
   face.tangent2 = face.normal.cross(face.tangent1);
   face.sheet = true;
-  FaceOutline outline;
   const FacetWeld* weld = facet.weld;
   if (!weld) {
     const ConvexPolygon triangle = ConvexPolygon::triangle(
         faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]), faceCoordinates(face, corners[2]));
-    for (int i = 0; i < 3; ++i) outline.corners.push_back(triangle[i]);
+    const FaceOutline outline({triangle[0], triangle[1], triangle[2]});
     face.faceOutline = &outline;
     faceGeometry(mesh, face, motion, out, model);
     return;
   }
   // The rounding of the edge from a to b, convex from the body's side, toward the facets beyond it (a corner of theirs
-  // off the edge): the outward normals of both faces, or none where the edge is not convex (or folds back on itself).
+  // off the edge; NaN for a free edge): the outward normals of both faces, or none where the edge is not convex (or
+  // folds back on itself). A free edge turns as a 90-degree edge would, its second face the plane across the sheet's
+  // rim: a lip of radius rho curving behind the sheet, within its outline.
   const Vector3r outward = -face.normal;
+  const Vector3r inside = (corners[0] + corners[1] + corners[2]) / 3;
   auto rounding = [&](const Vector3r& a, const Vector3r& b, const Vector3r& beyond) -> std::optional<RoundedFeature> {
-    if (!beyond.allFinite() || !(edgeRadius > 0)) return std::nullopt;
-    Vector3r other = (b - a).cross(beyond - a).normalized();
-    if (other.dot(corners[0] + corners[1] + corners[2] - 3 * a) > 0) other = -other;
+    if (!(edgeRadius > 0)) return std::nullopt;
+    Vector3r other = (beyond.allFinite() ? (b - a).cross(beyond - a) : (b - a).cross(outward)).normalized();
+    if (other.dot(inside - a) > 0) other = -other;
     const Real cosine = outward.dot(other);
     if (!(1 + cosine > 1e-3)) return std::nullopt;
     const Vector3r axisOffset = edgeRadius * (outward + other) / (1 + cosine);
     return RoundedFeature{a - axisOffset, b - axisOffset, edgeRadius, {outward, other}};
   };
   const int n = static_cast<int>(facet.outline.size());
+  std::vector<Vector2r> outlineCorners;
+  std::vector<bool> open;
+  std::vector<Real> inset, slack;
   for (int k = 0; k < n; ++k) {
-    outline.corners.push_back(faceCoordinates(face, facet.outline[k]));
-    const bool open = !weld->outlineClosed[k][side];
-    outline.open.push_back(open);
+    outlineCorners.push_back(faceCoordinates(face, facet.outline[k]));
+    open.push_back(!weld->outlineClosed[k][side]);
     const std::optional<RoundedFeature> strip =
-        open ? rounding(facet.outline[k], facet.outline[(k + 1) % n], facet.outlineBeyond[k]) : std::nullopt;
+        open.back() ? rounding(facet.outline[k], facet.outline[(k + 1) % n], facet.outlineBeyond[k]) : std::nullopt;
     // The face stops where the strip's cylinder touches it: rho tan(theta / 2) short of the edge.
-    outline.inset.push_back(strip ? edgeRadius * strip->faceNormals[0].cross(strip->faceNormals[1]).norm() /
-                                        (1 + strip->faceNormals[0].dot(strip->faceNormals[1]))
-                                  : 0);
+    inset.push_back(strip ? edgeRadius * strip->faceNormals[0].cross(strip->faceNormals[1]).norm() /
+                                (1 + strip->faceNormals[0].dot(strip->faceNormals[1]))
+                          : 0);
     // A cap comes round a rounded edge only past the rounding's axis.
-    outline.slack.push_back(strip ? (strip->start - facet.outline[k]).norm() : 0);
+    slack.push_back(strip ? (strip->start - facet.outline[k]).norm() : 0);
   }
   // The outline turns counter-clockwise about the normal, so clockwise about n12 on side 0.
   if (side == 0) {
-    std::reverse(outline.corners.begin(), outline.corners.end());
+    std::reverse(outlineCorners.begin(), outlineCorners.end());
     auto reverseEdges = [](auto& edges) {  // edge i ran from corner i to i + 1
       std::reverse(edges.begin(), edges.end());
       std::rotate(edges.begin(), edges.begin() + 1, edges.end());
     };
-    reverseEdges(outline.open);
-    reverseEdges(outline.inset);
-    reverseEdges(outline.slack);
+    reverseEdges(open);
+    reverseEdges(inset);
+    reverseEdges(slack);
   }
+  const FaceOutline outline(std::move(outlineCorners), std::move(open), std::move(inset), std::move(slack));
   face.faceOutline = &outline;
   const std::array<Vector2r, 3> own{faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]),
                                     faceCoordinates(face, corners[2])};
-  if (weld->panelSize > 1) face.owns = [&own, weld](const Vector2r& p) { return facetOwns(own, *weld, p); };
+  const ConvexPolygon ownTriangle = ConvexPolygon::triangle(own[0], own[1], own[2]);  // counter-clockwise
+  const FaceOutline ownOutline({ownTriangle[0], ownTriangle[1], ownTriangle[2]});
+  if (weld->panelSize > 1) {
+    face.owns = [&own, weld](const Vector2r& p) { return facetOwns(own, *weld, p); };
+    face.owned = &ownOutline;
+  }
   faceGeometry(mesh, face, motion, out, model);
   for (int e = 0; e < 3; ++e)
     if (weld->ownsStrip[e] && !weld->edgeClosed[e][side])

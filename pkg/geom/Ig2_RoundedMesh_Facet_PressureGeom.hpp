@@ -8,8 +8,9 @@
 // panel's other members keep the rest); a seam where the surface goes on toward the body is no edge a cap can come
 // round. An edge between panels that is convex from the body's side (a lifter's ridge, a box's edge seen from
 // outside) is rounded by edgeRadius rho: the faces stop rho tan(theta / 2) short of it (theta the angle between their
-// normals) and the cylinder strip between them pushes (TriangleEdgeGeom.hpp), computed by the facet that owns it.
-// Free edges and the corners of a facet surface stay sharp.
+// normals) and the cylinder strip between them pushes (TriangleEdgeGeom.hpp), computed by the facet that owns it. A
+// free edge (a plate's rim) is rounded as a 90-degree edge whose second face is the plane across the rim: a lip of
+// radius rho on each side of the sheet, within its outline. The corners of a facet surface stay sharp.
 // Inputs in body 1's frame: the facet placed there, and the facet's motion relative to body 1.
 #pragma once
 

@@ -10,6 +10,11 @@
 namespace roundedmesh {
 namespace {
 
+// How deep behind a cap, as a fraction of its body's bounding radius, a rounded edge's axis may lie and still be under
+// the cap: past the overlaps the stop rule lets a pair reach (0.5 r_eq, about 0.25 of a gummy bear's bounding radius)
+// with room to spare; a ball swallowing a rounded ridge 0.3 r_eq deep has the axis 0.2 of its radius behind its caps.
+constexpr Real kSwallowed = 0.3;
+
 // The strip's cross-section projected on t2: rho times the range of n . t2 over the arc of outward normals n from
 // normals[0] to normals[1] (the shorter way round).
 std::array<Real, 2> arcRange(const std::vector<Vector3r>& normals, const Vector3r& t2) {
@@ -63,8 +68,11 @@ GeomTest triangleFeatureGeom(const RoundedMesh& mesh, int triangle, const Rounde
   const Real along = ((distance - rho) * (distance + rho) + R * R) / (2 * distance);
   const Vector3r c = s + along * n;
   // The contact plane must pass through the cap, within its reach (circumradius + cap height) of its circumcentre
-  // along n12, and through the cylinder: a flat triangle's huge sphere puts it anywhere.
-  if (std::abs((c - rounded.circumcentre).dot(n)) > rounded.circumradius + rounded.capHeight + rho)
+  // along n12, and through the cylinder: a flat triangle's huge sphere puts it anywhere. And the axis may lie behind
+  // the cap (a body that has swallowed the rounding) only so deep: a cap on a body's far side, facing away from an
+  // edge at its front, has a sphere that reaches through the body to the edge.
+  if (std::abs((c - rounded.circumcentre).dot(n)) > rounded.circumradius + rounded.capHeight + rho ||
+      (q - rounded.circumcentre).dot(rounded.normal) < -(rho + kSwallowed * mesh.sphereBoundRadius()))
     return {Rejection::NoOverlap};
   // Hertz's ellipse lies within the surfaces' intersection, whose reach along the axis is sqrt(2 R delta).
   const Vector3r offset = rounded.circumcentre - c;
@@ -114,13 +122,20 @@ GeomTest triangleFeatureGeom(const RoundedMesh& mesh, int triangle, const Rounde
 
 void featureGeometry(const RoundedMesh& mesh, const RoundedFeature& feature, const RelativeMotion& motion,
                      GeomOutput out, CurvatureModel model) {
-  AlignedBox3r reach(feature.start);
-  reach.extend(feature.end);
-  reach = AlignedBox3r(reach.min().array() - feature.radius, reach.max().array() + feature.radius);
-  // A cap can touch the cylinder only if its box comes within rho of the axis segment's box; along the axis S is
-  // clipped to the segment, so a cap beyond its ends is tested by the ends' own features.
+  // A cap can touch the cylinder only if its box comes within rho of the axis segment (S is clipped to the segment
+  // along the axis), or has swallowed it (triangleFeatureGeom): the box's centre within that reach and half its
+  // diagonal of the segment, a box or node of the tree being tested by the same bound.
+  const Vector3r along = feature.end - feature.start;
+  const Real lengthSq = along.squaredNorm();
+  const Real capReach = feature.radius + kSwallowed * mesh.sphereBoundRadius();
+  auto nearSegment = [&](const AlignedBox3r& box) {
+    const Vector3r centre = box.center();
+    const Real t = lengthSq > 0 ? std::clamp((centre - feature.start).dot(along) / lengthSq, Real(0), Real(1)) : 0;
+    const Real reach = capReach + 0.5 * box.sizes().norm();
+    return (centre - feature.start - t * along).squaredNorm() <= reach * reach;
+  };
   PressureGeom geom;
-  mesh.tree().query([&](const AlignedBox3r& box) { return box.intersects(reach); },
+  mesh.tree().query(nearSegment,
                     [&](int t) { out.add(triangleFeatureGeom(mesh, t, feature, motion, geom, model), geom); });
 }
 

@@ -3,31 +3,37 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "pkg/geom/DeepContactCriterion.hpp"
 #include "pkg/geom/EllipticalContact.hpp"
 
 namespace roundedmesh {
+
+FaceOutline::FaceOutline(std::vector<Vector2r> corners_, std::vector<bool> open_, std::vector<Real> inset_,
+                         std::vector<Real> slack_)
+    : corners(std::move(corners_)), open(std::move(open_)), inset(std::move(inset_)), slack(std::move(slack_)) {
+  const int n = static_cast<int>(corners.size());
+  for (int i = 0; i < n; ++i) {
+    const Vector2r along = (corners[(i + 1) % n] - corners[i]).normalized(), inward(-along.y(), along.x());
+    const Vector2r shift = (inset.empty() ? 0 : inset[i]) * inward;
+    lines.push_back({corners[i] + shift, corners[(i + 1) % n] + shift, inward, inward.dot(corners[i] + shift)});
+  }
+}
+
 namespace {
 
-// The polygon clipped to the outline moved by `offset`, each edge moved inward by its inset: by the edges it crosses
-// only, so that a panel's outline of many corners leaves a small polygon small.
-ConvexPolygon clippedToOutline(const ConvexPolygon& polygon, const FaceOutline& outline, const Vector2r& offset) {
+// The polygon, within the circle of `radius` about `centre`, clipped to the outline moved by `offset`: by the edges
+// that circle crosses only, so that a panel's outline of many corners costs a dot product per corner.
+ConvexPolygon clippedToOutline(const ConvexPolygon& polygon, const Vector2r& centre, Real radius,
+                               const FaceOutline& outline, const Vector2r& offset) {
   ConvexPolygon buffers[2];
   int spare = 0;
   const ConvexPolygon* current = &polygon;
-  const int n = static_cast<int>(outline.corners.size());
-  for (int i = 0; i < n && !current->empty(); ++i) {
-    Vector2r a = outline.corners[i] + offset, b = outline.corners[(i + 1) % n] + offset;
-    if (!outline.inset.empty() && outline.inset[i] > 0) {
-      const Vector2r along = (b - a).normalized(), inward(-along.y(), along.x());
-      a += outline.inset[i] * inward;
-      b += outline.inset[i] * inward;
-    }
-    bool crosses = false;
-    for (int k = 0; k < current->size() && !crosses; ++k) crosses = cross2(b - a, (*current)[k] - a) < 0;
-    if (!crosses) continue;
-    current->clipInto(a, b, buffers[spare]);
+  for (const FaceOutline::Line& line : outline.lines) {
+    if (current->empty()) break;
+    if (line.inward.dot(centre - offset) - line.offset >= radius) continue;
+    current->clipInto(line.from + offset, line.to + offset, buffers[spare]);
     current = &buffers[spare];
     spare = 1 - spare;
   }
@@ -57,7 +63,9 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
   const Triangle& corners = mesh.triangles()[triangle];
   for (int i = 0; i < 3; ++i) geom.nodes[i] = toPlane(mesh.vertices()[corners[i]]);
   geom.polygon = ConvexPolygon::triangle(geom.nodes[0], geom.nodes[1], geom.nodes[2]);
-  if (face.faceOutline) geom.polygon = clippedToOutline(geom.polygon, *face.faceOutline, toPlane(face.origin));
+  if (face.faceOutline)
+    geom.polygon = clippedToOutline(geom.polygon, toPlane(rounded.circumcentre), rounded.circumradius,
+                                    *face.faceOutline, toPlane(face.origin));
   if (geom.polygon.empty()) return {Rejection::EmptyPolygon};
 
   geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
@@ -103,23 +111,49 @@ Real distanceToOpenEdge(const FaceOutline& outline, const Vector2r& p) {
 
 void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
                   CurvatureModel model) {
-  // A cap that reaches the plane has part of its box on the partner's side.
+  // A cap that reaches the plane has part of its box on the partner's side. Behind a sheet with an open edge, a cap
+  // deeper than the outline is wide (plus the edges' slack) is farther behind it than from any open edge, and the
+  // sheet rule would reject it: it is not tested.
+  Real deepest = std::numeric_limits<Real>::infinity();
+  if (face.sheet && face.faceOutline) {
+    const FaceOutline& outline = *face.faceOutline;
+    if (outline.open.empty() || std::find(outline.open.begin(), outline.open.end(), true) != outline.open.end()) {
+      Real width = 0, slack = 0;
+      for (const Vector2r& x : outline.corners)
+        for (const Vector2r& y : outline.corners) width = std::max(width, (x - y).norm());
+      for (Real s : outline.slack) slack = std::max(slack, s);
+      deepest = width + slack;
+    }
+  }
   auto reachesPlane = [&](const AlignedBox3r& box) {
-    return face.normal.dot(face.origin - box.center()) < 0.5 * face.normal.cwiseAbs().dot(box.sizes());
+    const Real behind = face.normal.dot(box.center() - face.origin), half = 0.5 * face.normal.cwiseAbs().dot(box.sizes());
+    return behind > -half && behind - half <= deepest;
   };
-  // A cap whose projection meets the outline lies in the prism over it, as deep on either side as the body is wide.
+  // A cap whose projection meets the outline (or the part of it whose contacts the face keeps) lies in the prism over
+  // it, as deep on either side as the body is wide: its box's AABB for the tree's nodes, and for a triangle its box's
+  // centre projected on the plane within half its diagonal of every edge's line.
   AlignedBox3r prism(Vector3r::Constant(-std::numeric_limits<Real>::infinity()),
                      Vector3r::Constant(std::numeric_limits<Real>::infinity()));
-  if (face.faceOutline) {
+  const FaceOutline* region = face.owned ? face.owned : face.faceOutline;
+  if (region) {
     prism.setEmpty();
     const Real reach = 2 * mesh.sphereBoundRadius();
-    for (const Vector2r& x : face.faceOutline->corners) {
+    for (const Vector2r& x : region->corners) {
       const Vector3r corner = face.origin + x.x() * face.tangent1 + x.y() * face.tangent2;
       prism.extend(corner + reach * face.normal).extend(corner - reach * face.normal);
     }
   }
+  auto overRegion = [&](const AlignedBox3r& box) {
+    if (!region) return true;
+    const Vector2r centre = faceCoordinates(face, box.center());
+    const Real half = 0.5 * box.sizes().norm();
+    for (const FaceOutline::Line& line : region->lines)
+      if (line.inward.dot(centre) - line.offset < -half) return false;
+    return true;
+  };
   PressureGeom geom;
   mesh.tree().query([&](const AlignedBox3r& box) { return reachesPlane(box) && box.intersects(prism); }, [&](int t) {
+    if (!overRegion(mesh.tree().triangleBox(t))) return;
     GeomTest result = trianglePlaneGeom(mesh, t, face, motion, geom, model);
     if (result && face.owns && !face.owns(faceCoordinates(face, planePoint(geom, geom.effectivePoint)))) return;
     if (result && face.sheet) {

@@ -22,11 +22,20 @@ namespace roundedmesh {
 // origin; for a sheet, whether a cap can come round each edge (corners i, i + 1): a free or convex edge, not a seam
 // where the surface goes on toward the body (FacetSurface.hpp); and where a rounded edge trims the face.
 struct FaceOutline {
+  explicit FaceOutline(std::vector<Vector2r> corners, std::vector<bool> open = {}, std::vector<Real> inset = {},
+                       std::vector<Real> slack = {});
+
   std::vector<Vector2r> corners;
   std::vector<bool> open;    // empty: every edge
   std::vector<Real> inset;   // how far S stops short of each edge [m] (a rounded edge takes over there); empty: 0
   std::vector<Real> slack;   // for the sheet rule, how much farther a cap must reach to come round each edge [m]:
                              // the depth of a rounded edge's axis behind it; empty: 0
+  // Each edge moved in by its inset, from -> to, and its line: x is inside where inward . x >= offset.
+  struct Line {
+    Vector2r from, to, inward;
+    Real offset;
+  };
+  std::vector<Line> lines;
 };
 
 // A face of the partner in body 1's frame: a point on it, the normal n12 pointing into the partner, and
@@ -41,6 +50,8 @@ struct ContactFace {
   const FaceOutline* faceOutline = nullptr;
   bool sheet = false;
   std::function<bool(const Vector2r&)> owns;
+  const FaceOutline* owned = nullptr;  // with owns: a convex region (outline coordinates) holding every point it keeps,
+                                       // so that only caps over it are tested
 };
 
 // A point x of the face's plane in the (t1, t2) coordinates of its outline, relative to its origin.

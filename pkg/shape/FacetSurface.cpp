@@ -268,9 +268,11 @@ std::vector<FacetWeld> weldFacets(const std::vector<std::array<Vector3r, 3>>& fa
           if (panelOf[g] == seed && g < f) weld.ownsCorner[i] = false;
     }
   }
-  // Each rounded edge between two panels is computed once, by the facets on the side of the panel of lower index.
+  // Each rounded edge between two panels is computed once, by the facets on the side of the panel of lower index; a
+  // free edge's by its facet.
   for (int f = 0; f < count; ++f)
-    for (int e = 0; e < 3; ++e) welds[f].ownsStrip[e] = across[f][e] >= 0 && panelOf[f] < panelOf[across[f][e]];
+    for (int e = 0; e < 3; ++e)
+      welds[f].ownsStrip[e] = across[f][e] >= 0 ? panelOf[f] < panelOf[across[f][e]] : flatAcross[f][e].empty();
   return welds;
 }
 

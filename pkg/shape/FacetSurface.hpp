@@ -39,7 +39,7 @@ struct FacetWeld {
   std::array<Vector3r, 3> beyond{Vector3r::Constant(kNaN), Vector3r::Constant(kNaN), Vector3r::Constant(kNaN)};
                                         // edge i: the corner, off the edge, of the facet beyond that turns least (NaN:
                                         // a free edge or a flat seam)
-  std::array<bool, 3> ownsStrip{};      // edge i: where it is a convex edge, this facet computes its rounding
+  std::array<bool, 3> ownsStrip{};      // edge i: where it is a convex or free edge, this facet computes its rounding
   int panel = -1;                       // index of the panel (the lowest index of its members)
   int panelSize = 1;                    // how many facets it has
 };

@@ -92,7 +92,7 @@ TEST(FlatPartners, AFacetPushesOnlyWhereTheBodyReachesIt) {
   face.tangent2 = face.normal.cross(face.tangent1);
   const ConvexPolygon triangle = ConvexPolygon::triangle(
       faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]), faceCoordinates(face, corners[2]));
-  const FaceOutline outline{{triangle[0], triangle[1], triangle[2]}, {}, {}, {}};
+  const FaceOutline outline({triangle[0], triangle[1], triangle[2]});
   face.faceOutline = &outline;
   faceGeometry(ring.shape(), face, RelativeMotion(), GeomOutput(geoms));
   ASSERT_FALSE(geoms.empty());
