@@ -5,7 +5,7 @@ own pipeline), with the edge radius rho at its default, a tenth of the ball's r_
     /usr/bin/python3 scripts/validation/partner_edges.py [--output out/partner_edges]
 
   seam    the ball held 1 mm deep and moved across the diagonal seam of a square of two coplanar Facets: the welded
-          surface, each Facet alone (as before the surfaces: their forces summed), and a Wall.
+          surface, each Facet alone with sharp edges (as before the surfaces: their forces summed), and a Wall.
   edge    the ball pushed along the bisector onto a Box's 90-degree edge and onto a drum lifter's 37-degree ridge of
           Facets, from first touch to 0.3 r_eq: the force, and Hertz's for a sphere of R on a cylinder of rho (Johnson
           1985, Section 4.2; solved here with scipy's elliptic integrals, independently of the engine).
@@ -79,17 +79,17 @@ def ridge(apex):
 def seam_panel(ball, rows):
     facets, wall = square_of_two_facets(), utils.wall(0, axis=2, sense=1)
     xs = np.linspace(-0.015, 0.015, 121)
-    series = {"welded surface": [], "each Facet alone (before)": [], "Wall": []}
+    series = {"welded surface": [], "each Facet alone, sharp (before)": [], "Wall": []}
     for x in xs:
         pos = (x, -x, R - 0.001)  # across the seam x = y
         series["welded surface"].append(force(ball, pos, facets)[2])
-        series["each Facet alone (before)"].append(sum(force(ball, pos, f)[2] for f in facets))
+        series["each Facet alone, sharp (before)"].append(sum(force(ball, pos, f, edge_radius=0)[2] for f in facets))
         series["Wall"].append(force(ball, pos, wall)[2])
     for name, values in series.items():
         rows += [("seam", x, name, f) for x, f in zip(xs, values)]
     wall_force = np.array(series["Wall"])
     worst = np.max(np.abs(np.array(series["welded surface"]) - wall_force) / wall_force)
-    lost = np.max(1 - np.array(series["each Facet alone (before)"]) / wall_force)
+    lost = np.max(1 - np.array(series["each Facet alone, sharp (before)"]) / wall_force)
     return xs, series, f"seam: welded surface within {worst:.1e} of the Wall's force; each Facet alone lost up to " \
                        f"{100 * lost:.0f} %"
 
