@@ -56,6 +56,7 @@ bool facetOwns(const std::array<Vector2r, 3>& corners, const FacetWeld& weld, co
 void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFacet& facet, Real edgeRadius,
                                         const RelativeMotion& motion, GeomOutput out, CurvatureModel model) {
   const std::array<Vector3r, 3>& corners = facet.corners;
+  if (!hasArea(corners)) return;  // a sliver with collinear corners: no plane, nothing to push with
   const Vector3r normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
   // The body's side (FacetWeld's side 0: that of the normal of the corners' order); n12 points from the body (its
   // centre is body 1's origin) into the facet.

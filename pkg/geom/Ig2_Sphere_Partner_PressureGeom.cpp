@@ -70,6 +70,7 @@ Plane boxPlane(const Box& box, const Vector3r& centre, const Matrix3r& orientati
 std::optional<Plane> facetPlane(const PlacedFacet& facet) {
   // The facet in its own plane coordinates (origin at corner 0), the sphere's centre projected on it.
   const std::array<Vector3r, 3>& corners = facet.corners;
+  if (!hasArea(corners)) return std::nullopt;
   const Vector3r u = (corners[1] - corners[0]).normalized();
   Vector3r normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
   const Vector3r v = normal.cross(u);

@@ -5,6 +5,7 @@
 // the panel of coplanar facets they belong to, and what lies beyond each edge.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <vector>
@@ -24,6 +25,14 @@ inline std::array<Vector3r, 3> facetCorners(const Facet& facet, const Vector3r& 
   std::array<Vector3r, 3> corners;
   for (int i = 0; i < 3; ++i) corners[i] = position + orientation * facet.vertices[i];
   return corners;
+}
+
+// Whether the corners span a plane: a facet whose corners are collinear (to a billionth of its size), as CAD exports
+// leave some, has no normal and touches nothing.
+inline bool hasArea(const std::array<Vector3r, 3>& corners) {
+  const Real size = std::max({(corners[1] - corners[0]).norm(), (corners[2] - corners[1]).norm(),
+                              (corners[0] - corners[2]).norm()});
+  return (corners[1] - corners[0]).cross(corners[2] - corners[0]).norm() > 1e-9 * size * size;
 }
 
 // A facet moved into another frame (x' = rotation x + translation, x in the facet body's frame): its corners and,

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "pkg/math/ConvexHull.hpp"
+#include "pkg/shape/Facet.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -95,16 +96,19 @@ std::vector<FacetWeld> weldFacets(const std::vector<std::array<Vector3r, 3>>& fa
   const std::vector<std::array<int, 3>> index = weldVertices(facets, tolerance, vertices);
 
   std::vector<Vector3r> normals(count);
+  std::vector<bool> degenerate(count);
   std::vector<Real> sizes(count);
   for (int f = 0; f < count; ++f) {
     const auto& c = facets[f];
-    normals[f] = (c[1] - c[0]).cross(c[2] - c[0]).normalized();
     sizes[f] = std::max({(c[1] - c[0]).norm(), (c[2] - c[1]).norm(), (c[0] - c[2]).norm()});
+    // A facet without area (collinear corners, as CAD exports leave some) has no plane: it is welded to nothing.
+    degenerate[f] = !hasArea(c);
+    normals[f] = degenerate[f] ? Vector3r::UnitZ() : Vector3r((c[1] - c[0]).cross(c[2] - c[0]).normalized());
   }
   std::map<std::array<int, 2>, std::vector<EdgeSide>> edges;
   std::vector<std::vector<int>> vertexFacets(vertices.size());
   for (int f = 0; f < count; ++f)
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 3 && !degenerate[f]; ++i) {
       const int a = index[f][i], b = index[f][(i + 1) % 3];
       if (a != b) edges[{std::min(a, b), std::max(a, b)}].push_back({f, i});
       vertexFacets[a].push_back(f);
@@ -147,6 +151,14 @@ std::vector<FacetWeld> weldFacets(const std::vector<std::array<Vector3r, 3>>& fa
   std::vector<int> panelOf(count, -1);
   for (int seed = 0; seed < count; ++seed) {
     if (panelOf[seed] >= 0) continue;
+    if (degenerate[seed]) {  // alone, its corners its outline, every edge free
+      panelOf[seed] = seed;
+      welds[seed].panel = seed;
+      welds[seed].outline.assign(facets[seed].begin(), facets[seed].end());
+      welds[seed].outlineClosed.assign(3, SidePair{false, false});
+      welds[seed].outlineBeyond.assign(3, Vector3r::Constant(kNaN));
+      continue;
+    }
     const auto& s = facets[seed];
     const Vector3r e1 = (s[1] - s[0]).normalized(), e2 = normals[seed].cross(e1);
     auto inPlane = [&](const Vector3r& x) { return Vector2r((x - s[0]).dot(e1), (x - s[0]).dot(e2)); };

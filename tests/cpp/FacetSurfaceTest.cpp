@@ -69,6 +69,31 @@ TEST(FacetSurface, TheTwoHalvesOfASquareAreOnePanel) {
   EXPECT_FALSE(w[0].edgeClosed[0][0] || w[0].edgeClosed[0][1]);
 }
 
+TEST(FacetSurface, AFacetWithoutAreaIsWeldedToNothing) {
+  // A square of two facets, and a sliver with collinear corners along its diagonal (as CAD exports leave some): the
+  // square is still one panel, the sliver its own, and a ball over the diagonal meets the Wall's plane (1e-12).
+  const std::vector<Corners> facets{{Vector3r(0, 0, 0), Vector3r(1, 0, 0), Vector3r(1, 1, 0)},
+                                    {Vector3r(0, 0, 0), Vector3r(1, 1, 0), Vector3r(0, 1, 0)},
+                                    {Vector3r(0, 0, 0), Vector3r(0.5, 0.5, 0), Vector3r(1, 1, 0)}};
+  const std::vector<FacetWeld> w = weld(facets);
+  EXPECT_EQ(w[0].panelSize, 2);
+  EXPECT_EQ(w[1].panel, w[0].panel);
+  EXPECT_EQ(w[2].panelSize, 1);
+  EXPECT_EQ(w[2].outline.size(), 3u);
+  const BodyMesh ball(icosphere(0.025, 3));
+  std::vector<Corners> scaled = facets;
+  for (Corners& c : scaled)
+    for (Vector3r& x : c) x = 0.2 * x - Vector3r(0.1, 0.1, 0);
+  const BodyState body = at(Vector3r(0.001, 0, 0.024), Quaternionr(Eigen::AngleAxis<Real>(0.4, Vector3r(1, 2, 3).normalized())));
+  std::vector<Partner> partners;
+  for (size_t f = 0; f < scaled.size(); ++f) partners.push_back({static_cast<int>(f), Facet{scaled[f], nullptr}, kFloor});
+  const Wrench surface = surfaceContact(roundedBody(0, ball, kRubber), body, partners,
+                                        std::vector<BodyState>(3, at(Vector3r::Zero())), EngineOptions()).onFirst;
+  const Wrench wall = partnerContact(roundedBody(0, ball, kRubber), body, Wall{2, 1}, at(Vector3r::Zero()), kFloor,
+                                     EngineOptions()).onFirst;
+  EXPECT_LT((surface.force - wall.force).norm(), 1e-12 * wall.force.norm());
+}
+
 TEST(FacetSurface, AFoldIsClosedOnTheSideItTurnsTo) {
   // Edge 0 of the first facet runs along y at x = 0; the second rises toward the first's normal (+z) beyond it.
   const std::vector<Corners> facets{{Vector3r(0, 0, 0), Vector3r(0, 1, 0), Vector3r(-1, 0.5, 0)},
