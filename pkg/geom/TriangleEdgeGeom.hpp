@@ -23,8 +23,8 @@ namespace roundedmesh {
 
 // A rounded edge (start != end) or corner (start == end) in body 1's frame: the axis segment or centre [m], the
 // radius rho [m], and the outward normals of the faces it joins (two for an edge, in either order, with an angle
-// below 180 degrees between them; those of the corner's faces for a corner, whose patch is where an outward normal
-// has a non-negative component along each).
+// below 180 degrees between them; those of the corner's faces for a corner, in order round it, whose patch is the
+// cone they span: its projection is taken at the normals' tips and the midpoints of the arcs between them).
 struct RoundedFeature {
   Vector3r start, end;
   Real radius;
