@@ -4,15 +4,10 @@
 #include <optional>
 
 #include "pkg/geom/TriangleEdgeGeom.hpp"
+#include "pkg/math/Segment.hpp"
 
 namespace roundedmesh {
 namespace {
-
-// Distance from p to the segment from a to b.
-Real segmentDistance(const Vector2r& p, const Vector2r& a, const Vector2r& b) {
-  const Real along = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), Real(0), Real(1));
-  return (p - (a + along * (b - a))).norm();
-}
 
 // The side of the surface the body's centre (the origin) is on, seen from this facet: the side of its plane, unless
 // the centre lies behind the plane past an edge that is convex from the other side, and in front of the facets beyond
@@ -46,7 +41,7 @@ bool facetOwns(const std::array<Vector2r, 3>& corners, const FacetWeld& weld, co
   for (int i = 0; i < 3; ++i)
     if ((p - corners[i]).norm() <= on) return weld.ownsCorner[i];
   for (int i = 0; i < 3; ++i)
-    if (segmentDistance(p, corners[i], corners[(i + 1) % 3]) <= on) return weld.ownsEdge[i];
+    if ((p - closestOnSegment(p, corners[i], corners[(i + 1) % 3])).norm() <= on) return weld.ownsEdge[i];
   const Real orientation = cross2(corners[1] - corners[0], corners[2] - corners[0]);
   for (int i = 0; i < 3; ++i)
     if (!(cross2(corners[(i + 1) % 3] - corners[i], p - corners[i]) * orientation > 0)) return false;
@@ -120,13 +115,15 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFac
   }
   const FaceOutline outline(std::move(outlineCorners), std::move(open), std::move(inset), std::move(slack));
   face.faceOutline = &outline;
+  // A panel's member keeps the contacts whose c_eff it holds, and tests only the caps over itself.
   const std::array<Vector2r, 3> own{faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]),
                                     faceCoordinates(face, corners[2])};
-  const ConvexPolygon ownTriangle = ConvexPolygon::triangle(own[0], own[1], own[2]);  // counter-clockwise
-  const FaceOutline ownOutline({ownTriangle[0], ownTriangle[1], ownTriangle[2]});
+  std::optional<FaceOutline> ownOutline;
   if (weld->panelSize > 1) {
+    const ConvexPolygon ownTriangle = ConvexPolygon::triangle(own[0], own[1], own[2]);  // counter-clockwise
+    ownOutline.emplace(std::vector<Vector2r>{ownTriangle[0], ownTriangle[1], ownTriangle[2]});
     face.owns = [&own, weld](const Vector2r& p) { return facetOwns(own, *weld, p); };
-    face.owned = &ownOutline;
+    face.owned = &*ownOutline;
   }
   faceGeometry(mesh, face, motion, out, model);
   for (int e = 0; e < 3; ++e)

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
+#include "pkg/math/Segment.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -85,8 +86,7 @@ std::optional<Plane> facetPlane(const PlacedFacet& facet) {
     for (int i = 0; i < n; ++i) {
       const Vector2r a = inPlane(facet.outline[i]), b = inPlane(facet.outline[(i + 1) % n]);
       if (cross2(b - a, centre - a) >= 0) continue;
-      const Real along = std::clamp((centre - a).dot(b - a) / (b - a).squaredNorm(), Real(0), Real(1));
-      const Vector2r x = a + along * (b - a);
+      const Vector2r x = closestOnSegment(centre, a, b);
       if ((x - centre).squaredNorm() < nearest) {
         nearest = (x - centre).squaredNorm();
         p = x;

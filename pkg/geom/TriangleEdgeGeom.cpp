@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "pkg/geom/EllipticalContact.hpp"
+#include "pkg/geom/ProjectedTriangle.hpp"
 #include "pkg/math/ConvexHull.hpp"
 
 namespace roundedmesh {
@@ -81,10 +82,7 @@ GeomTest triangleFeatureGeom(const RoundedMesh& mesh, int triangle, const Rounde
 
   geom.tangent1 = edge ? axis : n.unitOrthogonal();
   geom.tangent2 = n.cross(geom.tangent1);
-  auto toPlane = [&](const Vector3r& x) { return Vector2r((x - c).dot(geom.tangent1), (x - c).dot(geom.tangent2)); };
-  const Triangle& corners = mesh.triangles()[triangle];
-  for (int i = 0; i < 3; ++i) geom.nodes[i] = toPlane(mesh.vertices()[corners[i]]);
-  geom.polygon = ConvexPolygon::triangle(geom.nodes[0], geom.nodes[1], geom.nodes[2]);
+  projectTriangle(mesh, triangle, c, geom.tangent1, geom.tangent2, geom);
   if (edge) {
     const std::array<Real, 2> across = arcRange(feature.faceNormals, geom.tangent2);
     const Real from = (feature.start - c).dot(axis), to = (feature.end - c).dot(axis);

@@ -7,6 +7,8 @@
 
 #include "pkg/geom/DeepContactCriterion.hpp"
 #include "pkg/geom/EllipticalContact.hpp"
+#include "pkg/geom/ProjectedTriangle.hpp"
+#include "pkg/math/Segment.hpp"
 
 namespace roundedmesh {
 
@@ -59,10 +61,8 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
   const Real inPlaneSq = offset.squaredNorm() - std::pow(offset.dot(face.normal), 2);
   if (inPlaneSq > std::pow(a + rounded.circumradius, 2)) return {Rejection::OutsideCircle};
 
-  auto toPlane = [&](const Vector3r& x) { return Vector2r((x - c).dot(face.tangent1), (x - c).dot(face.tangent2)); };
-  const Triangle& corners = mesh.triangles()[triangle];
-  for (int i = 0; i < 3; ++i) geom.nodes[i] = toPlane(mesh.vertices()[corners[i]]);
-  geom.polygon = ConvexPolygon::triangle(geom.nodes[0], geom.nodes[1], geom.nodes[2]);
+  auto toPlane = [&](const Vector3r& x) { return planeCoordinates(x, c, face.tangent1, face.tangent2); };
+  projectTriangle(mesh, triangle, c, face.tangent1, face.tangent2, geom);
   if (face.faceOutline)
     geom.polygon = clippedToOutline(geom.polygon, toPlane(rounded.circumcentre), rounded.circumradius,
                                     *face.faceOutline, toPlane(face.origin));
@@ -101,8 +101,8 @@ Real distanceToOpenEdge(const FaceOutline& outline, const Vector2r& p) {
   for (int i = 0; i < n; ++i) {
     if (!outline.open.empty() && !outline.open[i]) continue;
     const Vector2r a = outline.corners[i], b = outline.corners[(i + 1) % n];
-    const Real along = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), Real(0), Real(1));
-    nearest = std::min(nearest, (p - (a + along * (b - a))).norm() + (outline.slack.empty() ? 0 : outline.slack[i]));
+    const Real slack = outline.slack.empty() ? 0 : outline.slack[i];
+    nearest = std::min(nearest, (p - closestOnSegment(p, a, b)).norm() + slack);
   }
   return nearest;
 }
@@ -126,7 +126,8 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
     }
   }
   auto reachesPlane = [&](const AlignedBox3r& box) {
-    const Real behind = face.normal.dot(box.center() - face.origin), half = 0.5 * face.normal.cwiseAbs().dot(box.sizes());
+    const Real behind = face.normal.dot(box.center() - face.origin);
+    const Real half = 0.5 * face.normal.cwiseAbs().dot(box.sizes());
     return behind > -half && behind - half <= deepest;
   };
   // A cap whose projection meets the outline (or the part of it whose contacts the face keeps) lies in the prism over

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pkg/geom/EllipticalContact.hpp"
+#include "pkg/geom/ProjectedTriangle.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -71,12 +72,10 @@ GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partne
 
   geom.tangent1 = n.unitOrthogonal();
   geom.tangent2 = n.cross(geom.tangent1);
-  auto toPlane = [&](const Vector3r& x) { return Vector2r((x - c).dot(geom.tangent1), (x - c).dot(geom.tangent2)); };
-  const Triangle& corners = mesh.triangles()[triangle];
-  for (int i = 0; i < 3; ++i) geom.nodes[i] = toPlane(mesh.vertices()[corners[i]]);
-  geom.polygon = ConvexPolygon::triangle(geom.nodes[0], geom.nodes[1], geom.nodes[2]);
+  projectTriangle(mesh, triangle, c, geom.tangent1, geom.tangent2, geom);
   if (isTriangle) {
-    for (int i = 0; i < 3; ++i) geom.partnerNodes[i] = toPlane(partner.corner(i));
+    for (int i = 0; i < 3; ++i)
+      geom.partnerNodes[i] = planeCoordinates(partner.corner(i), c, geom.tangent1, geom.tangent2);
     geom.polygon = geom.polygon.intersection(
         ConvexPolygon::triangle(geom.partnerNodes[0], geom.partnerNodes[1], geom.partnerNodes[2]));
   }

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "pkg/math/ConvexHull.hpp"
+#include "pkg/math/Segment.hpp"
 #include "pkg/shape/Facet.hpp"
 
 namespace roundedmesh {
@@ -66,12 +67,6 @@ Real polygonArea(const std::vector<Vector2r>& polygon) {
   Real twice = 0;
   for (size_t i = 0; i < polygon.size(); ++i) twice += cross2(polygon[i], polygon[(i + 1) % polygon.size()]);
   return 0.5 * twice;
-}
-
-// Distance from p to the segment from a to b.
-Real segmentDistance(const Vector2r& p, const Vector2r& a, const Vector2r& b) {
-  const Real along = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), Real(0), Real(1));
-  return (p - (a + along * (b - a))).norm();
 }
 
 constexpr Real kNone = std::numeric_limits<Real>::infinity();
@@ -243,7 +238,9 @@ std::vector<FacetWeld> weldFacets(const std::vector<std::array<Vector3r, 3>>& fa
         const bool sameSide = normals[f].dot(normals[seed]) > 0;
         for (size_t k = 0; k < hull.size(); ++k) {
           const Vector2r &p = hull[k], &q = hull[(k + 1) % hull.size()];
-          if (segmentDistance(a, p, q) > onLine || segmentDistance(b, p, q) > onLine) continue;
+          const bool onStretch = (a - closestOnSegment(a, p, q)).norm() <= onLine &&
+                                 (b - closestOnSegment(b, p, q)).norm() <= onLine;
+          if (!onStretch) continue;
           const SidePair& edge = welds[f].edgeClosed[e];
           closed[k][0] = closed[k][0] && edge[sameSide ? 0 : 1];
           closed[k][1] = closed[k][1] && edge[sameSide ? 1 : 0];
