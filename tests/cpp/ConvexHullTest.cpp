@@ -2,6 +2,7 @@
 // among the points, no corner on a straight stretch.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
