@@ -12,6 +12,9 @@ angular velocities [rad/s] are global. The engine's options apply as for engine(
 its fields by name (gamma=, regime=, friction=, curvature=, normal=, ...), not both; a contact evaluated once has
 no history, so the spring's displacement is zero and only its damping -c v_t acts (capped by Coulomb).
 """
+import math
+import numbers
+
 import numpy as np
 
 from ._core import EngineOptions, _body_contact, _partner_contact, _plane_contact, _sphere_contact
@@ -69,6 +72,12 @@ def partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, ve
     item lists the triangle contacts as dicts (as triangle_contacts' rows). edge_radius [m]: what the partners' convex
     edges and corners are rounded by, as rm.set_edge_radius gives it in a scene (None: its default, a tenth of the
     body's volume-equivalent radius)."""
+    bodies = [partner] if hasattr(partner, "id") else list(partner) if isinstance(partner, (list, tuple)) else None
+    if not bodies or not all(hasattr(b, "id") and hasattr(b, "shape") for b in bodies):
+        raise TypeError(f"partner: expected a YADE Body or a non-empty list of them, got {partner!r}")
+    if edge_radius is not None and not (isinstance(edge_radius, numbers.Real) and math.isfinite(edge_radius)
+                                        and edge_radius >= 0):
+        raise ValueError(f"edge_radius: must be None or a finite radius >= 0 [m], got {edge_radius!r}")
     evaluated = _partner_contact(mesh, pos, ori, partner, mesh_material, partner_material, vel, ang_vel, details,
                                  -1.0 if edge_radius is None else float(edge_radius), engine_options(options, **named))
     return evaluated if details else evaluated[:4]

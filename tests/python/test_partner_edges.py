@@ -118,3 +118,13 @@ def test_a_ball_slides_across_a_seam_of_facets_as_on_a_wall():
         O.step()
         wall = rm.plane_contact(BALL, pos, TURN, (0, 0, 0), (0, 0, 1), BODY, FLOOR)[0]
         assert (O.forces.f(ball) - wall).norm() <= 1e-9 * wall.norm(), x
+
+
+def test_partner_contact_names_a_bad_partner_or_edge_radius():
+    box = utils.box((0, 0, 0), (0.1, 0.1, 0.1))
+    for partner in ([], 3, [box, 3]):
+        with pytest.raises(TypeError, match="partner: expected a YADE Body or a non-empty list of them"):
+            rm.partner_contact(BALL, _edge_pose(0.002), TURN, partner, BODY, FLOOR)
+    for radius in (-1e-3, math.nan, "thin"):
+        with pytest.raises(ValueError, match="edge_radius: must be None or a finite radius >= 0"):
+            rm.partner_contact(BALL, _edge_pose(0.002), TURN, box, BODY, FLOOR, edge_radius=radius)
