@@ -2,6 +2,8 @@
 // Boost.Python layer hands YADE's Vector3 and Quaternion to these types without conversion.
 #pragma once
 
+#include <limits>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -13,6 +15,8 @@ using Vector3r = Eigen::Matrix<Real, 3, 1>;
 using Matrix2r = Eigen::Matrix<Real, 2, 2>;
 using Matrix3r = Eigen::Matrix<Real, 3, 3>;
 using Quaternionr = Eigen::Quaternion<Real>;
+
+constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
 
 // z-component of the cross product of two plane vectors.
 inline Real cross2(const Vector2r& a, const Vector2r& b) { return a.x() * b.y() - a.y() * b.x(); }

@@ -12,6 +12,7 @@ ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& other)
   directContacts += other.directContacts;
   exactContacts += other.exactContacts;
   sphereContacts += other.sphereContacts;
+  coreContacts += other.coreContacts;
   slidingContacts += other.slidingContacts;
   neighbourRebuilds += other.neighbourRebuilds;
   candidateRebuilds += other.candidateRebuilds;

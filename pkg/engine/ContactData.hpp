@@ -30,6 +30,7 @@ struct ContactStatistics {
   int directContacts = 0;      // triangle contacts in the direct regime
   int exactContacts = 0;       // triangle contacts in the exact regime (closed form)
   int sphereContacts = 0;      // contacts of a sphere body with a sphere body or partner (one per pair)
+  int coreContacts = 0;        // touching core spheres (CorePair.hpp): pairs overlapping past the Hertz range
   int slidingContacts = 0;     // triangle and sphere contacts sliding (Eq. 21, or all of a pair's whose spring slides)
   int neighbourRebuilds = 0;   // rebuilds of the broad phase's neighbour list
   int candidateRebuilds = 0;   // triangle-pair candidate lists rebuilt (from their pair's near list)
@@ -78,6 +79,8 @@ struct PairSummary {
                                        // the bodies overlap; the deepest triangle contact can run through both at a
                                        // slant, longer than that (doc/physics.md, "Which triangle pairs touch")
   int triangleContacts = 0;
+  Real coreDepth = 0;                  // the deepest overlap of two core spheres, or of a core sphere and the partner
+                                       // (CorePair.hpp) [m]: 0 while the pair is within the Hertz range
   bool sliding = false;                // the pair's spring slides, or (viscous law) any triangle contact (Eq. 21)
   Real elasticEnergy = 0;              // sum of the triangle contacts' elastic energies (NormalLoad), and the
                                        // energy of the pair's tangential spring [J]

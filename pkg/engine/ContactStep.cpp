@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include "pkg/engine/BroadPhase.hpp"
+#include "pkg/engine/CorePair.hpp"
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/PairLoad.hpp"
 #include "pkg/engine/SpherePair.hpp"
@@ -129,6 +130,15 @@ PairResult resolvePair(const ContactModel& model, const ContactData& data, const
   pairGeometry(model, data, pair, scratch, statistics, candidates);
   PairResult result = pairLoad(model, data, pair, scratch, contacts, spring);
   result.statistics += statistics;
+  const CoreLoad core = corePair(model, data, pair);
+  if (core.contacts > 0) {
+    result.onBody.force += core.force;
+    result.onBody.torque += core.torque;
+    result.onOther = reaction(result.onBody, data.state(pair.body).position, data.state(pair.other).position);
+    result.summary.elasticEnergy += core.energy;
+    result.summary.coreDepth = core.deepest;
+    result.statistics.coreContacts += core.contacts;
+  }
   return result;
 }
 

@@ -31,6 +31,8 @@ const std::vector<EngineOptionField> kFields = {
                   "contact ellipse from both principal curvatures", {"mean", "principal"}},
     {"normal", "'pressure': each triangle contact's integrated pressure at its centre of pressure (Eq. 15); "
                "'energy': the exact gradient of the contacts' energy (curvature 'mean')", normalLawNames()},
+    {"core_inset", "how far below the surface each sphere of a body's core lies, as a fraction of its inscribed radius: "
+                   "the cores push where a pair overlaps past the Hertz range of its own radii; 1: no core", {}},
     {"threads", "OpenMP threads of a step; 0: as YADE, OMP_NUM_THREADS where set (yade -jN), else one", {}},
 };
 
@@ -76,6 +78,8 @@ void EngineOptions::validate() const {
     throw std::invalid_argument("gamma must be positive and finite, got " + number(pressure.gamma));
   if (!(stopOverlap > 0))
     throw std::invalid_argument("stop_overlap must be positive (math.inf: never), got " + number(stopOverlap));
+  if (!(coreInset > 0 && coreInset <= 1))
+    throw std::invalid_argument("core_inset must be in (0, 1] (1: no core), got " + number(coreInset));
   if (threads < 0) throw std::invalid_argument("threads must be 0 (as YADE) or positive, got " + std::to_string(threads));
   if (pressure.normal == NormalLaw::Energy && pressure.curvature != CurvatureModel::Mean)
     throw std::invalid_argument("normal='energy' takes the contact circle of curvature='mean', not the ellipse of '" +
@@ -92,7 +96,7 @@ int EngineOptions::resolvedThreads() const {
 bool EngineOptions::operator==(const EngineOptions& o) const {
   return pressure.gamma == o.pressure.gamma && pressure.regime == o.pressure.regime &&
          pressure.curvature == o.pressure.curvature && pressure.normal == o.pressure.normal && friction == o.friction &&
-         stopOverlap == o.stopOverlap && threads == o.threads;
+         stopOverlap == o.stopOverlap && coreInset == o.coreInset && threads == o.threads;
 }
 
 std::string choiceName(const EngineOptions& options, const std::string& name) {
@@ -120,6 +124,7 @@ Real numberValue(const EngineOptions& options, const std::string& name) {
   if (!field(name).choices.empty()) throw std::invalid_argument("engine option '" + name + "' is a choice, not a number");
   if (name == "gamma") return options.pressure.gamma;
   if (name == "stop_overlap") return options.stopOverlap;
+  if (name == "core_inset") return options.coreInset;
   return options.threads;
 }
 
@@ -128,6 +133,7 @@ void setNumber(EngineOptions& options, const std::string& name, Real value) {
     throw std::invalid_argument(name + " must be " + std::string("a name, got the number ") + number(value));
   if (name == "gamma") options.pressure.gamma = value;
   if (name == "stop_overlap") options.stopOverlap = value;
+  if (name == "core_inset") options.coreInset = value;
   if (name == "threads") {
     if (!(value >= 0 && value <= 1024 && value == std::floor(value)))
       throw std::invalid_argument("threads must be a whole number from 0 (as YADE) to 1024, got " + number(value));

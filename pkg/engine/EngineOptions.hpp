@@ -1,5 +1,6 @@
 // Every option of the contact engine in one struct (rm.engine(...), rm.EngineOptions): the normal law and its
-// integration (PressureOptions, law/), the friction law, the stop rule's overlap and the threads of a step. The
+// integration (PressureOptions, law/), the friction law, the stop rule's overlap, the deep-overlap core's inset and the
+// threads of a step. The
 // field table below is the one description of each option: its name as users write it, its meaning, its allowed
 // values; validate() holds the rules on single fields and between fields. The Python binding, the scene's saved
 // record and the docs are made from it.
@@ -18,10 +19,16 @@ namespace roundedmesh {
 // (doc/validation.md, "Deep overlaps"). A body resting under its weight overlaps about 0.01.
 constexpr Real kStopOverlap = 0.5;
 
+// How far below the surface each sphere of a body's core lies, as a fraction of that inscribed sphere's radius
+// (CoreRepulsion.hpp): two cores meet where a pair overlaps by this fraction of the sum of the inscribed radii there, past
+// the Hertz range of those radii; 1: no core.
+constexpr Real kCoreInset = 0.25;
+
 struct EngineOptions {
   PressureOptions pressure;                     // gamma, regime, curvature, normal
   FrictionLaw friction = FrictionLaw::Spring;   // the tangential law of every pair (doc/physics.md, "Friction")
   Real stopOverlap = kStopOverlap;              // infinite: no overlap stops a run (StopRules.hpp)
+  Real coreInset = kCoreInset;                  // the deep-overlap term's onset (CoreRepulsion.hpp); 1: none
   // OpenMP threads of a step; 0: YADE's convention, OMP_NUM_THREADS where set (yade -jN sets it), else one.
   int threads = 0;
 

@@ -9,7 +9,6 @@
 namespace roundedmesh {
 namespace {
 
-constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
 
 bool isFlat(const PartnerShape& shape) { return !std::holds_alternative<Sphere>(shape); }
 

@@ -72,9 +72,30 @@ GeomTest triangleFeatureGeom(const RoundedMesh& mesh, int triangle, const Rounde
   // along n12, and through the cylinder: a flat triangle's huge sphere puts it anywhere. And the axis may lie behind
   // the cap (a body that has swallowed the rounding) only so deep: a cap on a body's far side, facing away from an
   // edge at its front, has a sphere that reaches through the body to the edge.
+  // A cap in front of the axis reaches the cylinder only if the segment comes within rho of the cap, which lies within
+  // capHeight of its circumcircle: a flat triangle's sphere reaches the cylinder from centimetres away, through the
+  // body, along any n it faces.
+  const Vector3r nearest =
+      edge ? Vector3r(feature.start + std::clamp((rounded.circumcentre - feature.start).dot(axis), Real(0), length) * axis)
+           : feature.start;
+  const Real behind = -(q - rounded.circumcentre).dot(rounded.normal);  // how deep the axis lies behind the cap's plane
   if (std::abs((c - rounded.circumcentre).dot(n)) > rounded.circumradius + rounded.capHeight + rho ||
-      (q - rounded.circumcentre).dot(rounded.normal) < -(rho + kSwallowed * mesh.sphereBoundRadius()))
+      behind > rho + kSwallowed * mesh.sphereBoundRadius() ||
+      (behind < 0 && (nearest - rounded.circumcentre).norm() > rho + rounded.capHeight + rounded.circumradius))
     return {Rejection::NoOverlap};
+  // A cap with the axis behind it touches the cylinder only where the body has swallowed the rounding through that cap:
+  // the cap is then about as near the axis as the body's nearest surface, the axis' depth D in the body
+  // (SolidDistance's signed distance; negative outside, and clamped at its band, past which the axis is deep in the
+  // body). Where another surface is nearer, the cap is on the far side of the part of the body the edge presses into
+  // (a bear lying over a plate's rim: its back's triangles have spheres that reach the rim through the bear).
+  if (behind > 0) {
+    const SolidDistance& solid = mesh.solidDistance();
+    const Real depth =
+        -solid.signedAt(edge ? Vector3r(feature.start + std::clamp((q - feature.start).dot(axis), Real(0), length) * axis)
+                             : feature.start);
+    if (depth < solid.band() - solid.tolerance() && behind > depth + rho + mesh.maxCapHeight() + solid.tolerance())
+      return {Rejection::ThroughBody};
+  }
   // Hertz's ellipse lies within the surfaces' intersection, whose reach along the axis is sqrt(2 R delta).
   const Vector3r offset = rounded.circumcentre - c;
   const Real reach = std::sqrt(2 * R * overlap) + rounded.circumradius;

@@ -86,17 +86,22 @@ RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> t
 }
 
 const SolidDistance& RoundedMesh::solidDistance() const {
-  std::call_once(distance_->built, [&] {
+  std::call_once(lazy_->distanceBuilt, [&] {
     Real meanCircumradius = 0;
     for (const RoundedTriangle& r : rounded_) meanCircumradius += r.circumradius / rounded_.size();
     AlignedBox3r box;
     for (const Vector3r& v : vertices_) box.extend(v);
     const Real extent = box.sizes().maxCoeff();
     const Real spacing = std::max(0.5 * meanCircumradius, 0.01 * extent);
-    distance_->field = std::make_unique<const SolidDistance>(vertices_, triangles_, spacing,
-                                                             4 * meanCircumradius + 2 * spacing);
+    lazy_->distance = std::make_unique<const SolidDistance>(vertices_, triangles_, spacing,
+                                                            4 * meanCircumradius + 2 * spacing);
   });
-  return *distance_->field;
+  return *lazy_->distance;
+}
+
+const InscribedSpheres& RoundedMesh::inscribedSpheres() const {
+  std::call_once(lazy_->spheresBuilt, [&] { lazy_->spheres = roundedmesh::inscribedSpheres(*this); });
+  return lazy_->spheres;
 }
 
 std::vector<Real> RoundedMesh::radii() const {

@@ -16,6 +16,7 @@
 
 #include "pkg/shape/TriangleTree.hpp"
 #include "pkg/common/Types.hpp"
+#include "pkg/shape/InscribedSpheres.hpp"
 #include "pkg/shape/PrincipalCurvature.hpp"
 #include "pkg/shape/SolidDistance.hpp"
 
@@ -57,6 +58,9 @@ class RoundedMesh {
   // The distance from the flat mesh's solid (SolidDistance.hpp), built on first use (thread-safe): grid spacing
   // half the mean circumradius (at least 1/100 of the mesh's extent), band four mean circumradii and two spacings.
   const SolidDistance& solidDistance() const;
+  // The spheres inscribed in the flat mesh that its core is made of (InscribedSpheres.hpp), built on first use
+  // (thread-safe).
+  const InscribedSpheres& inscribedSpheres() const;
   // The same mesh moved rigidly: x -> rotation * x + translation.
   RoundedMesh transformed(const Matrix3r& rotation, const Vector3r& translation) const;
 
@@ -68,11 +72,12 @@ class RoundedMesh {
   Real sphereBoundRadius_ = 0;
   Real maxCapHeight_ = 0;
   TriangleTree tree_;
-  struct LazyDistance {
-    std::once_flag built;
-    std::unique_ptr<const SolidDistance> field;
+  struct Lazy {
+    std::once_flag distanceBuilt, spheresBuilt;
+    std::unique_ptr<const SolidDistance> distance;
+    InscribedSpheres spheres;
   };
-  std::shared_ptr<LazyDistance> distance_ = std::make_shared<LazyDistance>();  // copies share the same geometry
+  std::shared_ptr<Lazy> lazy_ = std::make_shared<Lazy>();  // copies share the same geometry
 };
 
 }  // namespace roundedmesh

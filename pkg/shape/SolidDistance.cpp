@@ -2,31 +2,9 @@
 
 #include <algorithm>
 
+#include "pkg/math/ClosestPoint.hpp"
+
 namespace roundedmesh {
-namespace {
-
-// The point of triangle abc closest to p (Ericson, Real-Time Collision Detection, 5.1.5).
-Vector3r closestOnTriangle(const Vector3r& p, const Vector3r& a, const Vector3r& b, const Vector3r& c) {
-  const Vector3r ab = b - a, ac = c - a, ap = p - a;
-  const Real d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return a;
-  const Vector3r bp = p - b;
-  const Real d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return b;
-  const Real vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
-  const Vector3r cp = p - c;
-  const Real d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return c;
-  const Real vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
-  const Real va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
-  const Real denominator = 1 / (va + vb + vc);
-  return a + ab * (vb * denominator) + ac * (vc * denominator);
-}
-
-}  // namespace
 
 SolidDistance::SolidDistance(const std::vector<Vector3r>& vertices, const std::vector<std::array<int, 3>>& triangles,
                              Real spacing, Real band)
@@ -95,21 +73,24 @@ SolidDistance::SolidDistance(const std::vector<Vector3r>& vertices, const std::v
       for (int k = 0; k < nz_; ++k) {
         const Real z = position(i, j, k).z();
         while (below < crossings.size() && crossings[below] < z) ++below;
-        if (below % 2 == 1) distances[index(i, j, k)] = 0;
+        if (below % 2 == 1) distances[index(i, j, k)] = -distances[index(i, j, k)];
       }
     }
   values_.assign(distances.begin(), distances.end());
 }
 
-Real SolidDistance::at(const Vector3r& x) const {
+Real SolidDistance::interpolated(const Vector3r& x, bool outsideOnly) const {
   const Vector3r u = (x - origin_) / spacing_;
   if (!(u.minCoeff() >= 0 && u.x() < nx_ - 1 && u.y() < ny_ - 1 && u.z() < nz_ - 1)) return band_;
   const int i = static_cast<int>(u.x()), j = static_cast<int>(u.y()), k = static_cast<int>(u.z());
   const Real fx = u.x() - i, fy = u.y() - j, fz = u.z() - k;
   auto lerp = [](Real p, Real q, Real f) { return p + (q - p) * f; };
-  const Real y0 = lerp(lerp(node(i, j, k), node(i + 1, j, k), fx), lerp(node(i, j + 1, k), node(i + 1, j + 1, k), fx), fy);
-  const Real y1 = lerp(lerp(node(i, j, k + 1), node(i + 1, j, k + 1), fx),
-                       lerp(node(i, j + 1, k + 1), node(i + 1, j + 1, k + 1), fx), fy);
+  auto value = [&](int di, int dj, int dk) {
+    const Real v = node(i + di, j + dj, k + dk);
+    return outsideOnly ? std::max(v, Real(0)) : v;
+  };
+  const Real y0 = lerp(lerp(value(0, 0, 0), value(1, 0, 0), fx), lerp(value(0, 1, 0), value(1, 1, 0), fx), fy);
+  const Real y1 = lerp(lerp(value(0, 0, 1), value(1, 0, 1), fx), lerp(value(0, 1, 1), value(1, 1, 1), fx), fy);
   return lerp(y0, y1, fz);
 }
 

@@ -192,6 +192,7 @@ class SceneContacts {
     s["direct_contacts"] = c.directContacts;
     s["exact_contacts"] = c.exactContacts;
     s["sphere_contacts"] = c.sphereContacts;
+    s["core_contacts"] = c.coreContacts;
     s["sliding_contacts"] = c.slidingContacts;
     s["neighbour_rebuilds"] = c.neighbourRebuilds;
     s["candidate_rebuilds"] = c.candidateRebuilds;

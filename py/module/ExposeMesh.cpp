@@ -358,6 +358,14 @@ void exposeMesh() {
                     "radius flat and concave triangles use in contact [m]")
       .add_property("distortion", +[](const BodyMesh& m) { return distortion(bodySurface(m)); },
                     "D = std(triangle area) / mean(triangle area) (Eq. 26)")
+      .add_property("inscribed_spheres",
+                    +[](const BodyMesh& m) {
+                      const InscribedSpheres& core = m.shape().inscribedSpheres();
+                      return bp::make_tuple(toArray(core.centres), toArray(core.radii));
+                    },
+                    "(centres (k, 3) [m], radii (k,) [m]), principal frame: the spheres inscribed in the mesh that its\n"
+                    "core is made of (doc/physics.md, 'Deep overlaps: the core'), largest first; the core's spheres are\n"
+                    "these shrunk by rm.engine(core_inset=...) of their radii")
       .add_property("normals", +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::normal)); },
                     "(m, 3) outward unit normal of each triangle")
       .add_property("areas", +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::area)); },

@@ -32,7 +32,7 @@ def critical_timestep(impact_speed=None):
 _STATISTICS = ("body_pairs", "touching_pairs", "candidates", "rejected_not_facing", "rejected_no_overlap",
                "rejected_outside_circle", "rejected_empty_polygon", "rejected_beyond_contact_circle",
                "rejected_through_body",
-               "quadrature_contacts", "direct_contacts", "exact_contacts", "sphere_contacts", "sliding_contacts", "neighbour_rebuilds",
+               "quadrature_contacts", "direct_contacts", "exact_contacts", "sphere_contacts", "core_contacts", "sliding_contacts", "neighbour_rebuilds",
                "candidate_rebuilds", "near_rebuilds", "broad_phase_ms", "pairs_ms", "reduction_ms", "read_ms",
                "write_ms", "deepest_pair_overlap", "deepest_pair_fraction", "threads")
 
@@ -52,6 +52,9 @@ def statistics():
                                here: the rounded body's triangles meet the sphere)
       sphere_contacts          contacts of a sphere body with another sphere body or a partner, one per pair
                                (the whole contact circle: no triangles, so not in candidates or rejected_*)
+      core_contacts            touching pairs of core spheres (or of a core sphere and a partner): the deep-overlap
+                               term, which acts only on pairs past the Hertz range of their own radii
+                               (doc/physics.md, "Deep overlaps: the core")
       sliding_contacts         triangle and sphere contacts sliding: all of a pair's whose spring slides (under the
                                viscous law, each by Eq. 21)
       neighbour_rebuilds       whether the broad phase's neighbour list was rebuilt (0 or 1)

@@ -26,7 +26,7 @@ std::string messageOf(const EngineOptions& options) {
 TEST(EngineOptions, TheTableNamesEveryOptionOnceWithItsDefault) {
   std::string names;
   for (const EngineOptionField& f : engineOptionFields()) names += std::string(names.empty() ? "" : " ") + f.name;
-  EXPECT_EQ(names, "gamma regime friction stop_overlap curvature normal threads");
+  EXPECT_EQ(names, "gamma regime friction stop_overlap curvature normal core_inset threads");
   const EngineOptions defaults;
   EXPECT_EQ(numberValue(defaults, "gamma"), 10);  // the paper's
   EXPECT_EQ(choiceName(defaults, "regime"), "auto");
@@ -34,6 +34,7 @@ TEST(EngineOptions, TheTableNamesEveryOptionOnceWithItsDefault) {
   EXPECT_EQ(numberValue(defaults, "stop_overlap"), kStopOverlap);
   EXPECT_EQ(choiceName(defaults, "curvature"), "mean");
   EXPECT_EQ(choiceName(defaults, "normal"), "pressure");
+  EXPECT_EQ(numberValue(defaults, "core_inset"), kCoreInset);
   EXPECT_EQ(numberValue(defaults, "threads"), 0);
   EXPECT_EQ(messageOf(defaults), "");
 }
@@ -74,6 +75,14 @@ TEST(EngineOptions, ValidateNamesTheOptionAndTheRuleBetweenFields) {
   o = EngineOptions();
   o.stopOverlap = 0;
   EXPECT_NE(messageOf(o).find("stop_overlap must be positive"), std::string::npos);
+  for (Real inset : {0.0, -0.1, 1.5, std::nan("")}) {
+    o = EngineOptions();
+    o.coreInset = inset;
+    EXPECT_NE(messageOf(o).find("core_inset must be in (0, 1]"), std::string::npos) << inset;
+  }
+  o = EngineOptions();
+  o.coreInset = 1;  // no core
+  EXPECT_EQ(messageOf(o), "");
   o = EngineOptions();
   o.pressure.normal = NormalLaw::Energy;
   o.pressure.curvature = CurvatureModel::Principal;
