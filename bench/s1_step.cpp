@@ -8,6 +8,7 @@
 //                              material with the tangential spring, 2: the same with the paper's viscous law;
 //                              curvature = 0: the paper's circle (mean curvature), 1: the ellipse of both principal
 //                              curvatures (estimated from the recorded mesh)
+//   s1Step/without_core/...    the same without the deep-overlap core (core_inset = 1): what the core costs
 //   BM_S1NarrowPhase           Ig2 over every pair's candidates of the settled packing (time per contact)
 //   BM_S1Load/friction         Law2, node forces and friction over its triangle contacts (time per contact)
 // Counters per step: body pairs, candidates, contacts, candidates per contact, list rebuilds, stage times.
@@ -49,7 +50,8 @@ ContactModel withFriction(ContactModel model, long friction) {
   return model;
 }
 
-void BM_S1Step(benchmark::State& state) {
+// One step of S1's contacts; `core`: with the deep-overlap core (the default), or without it (core_inset = 1).
+void s1Step(benchmark::State& state, bool core) {
   const int threads = static_cast<int>(state.range(0));
   const int motion = static_cast<int>(state.range(1));
   const RecordedScene::Trajectory* trajectory = motion == 1 ? &scene().shaking : motion == 2 ? &scene().resting : nullptr;
@@ -60,6 +62,7 @@ void BM_S1Step(benchmark::State& state) {
   if (state.range(3) > 0) model.skins.candidateSteps = static_cast<Real>(state.range(3));
   if (state.range(4) > 0) model.skins.nearFactor = static_cast<Real>(state.range(4));
   if (state.range(6) == 1) model.options.pressure.curvature = CurvatureModel::Principal;
+  if (!core) model.options.coreInset = 1;
   ContactData data;
   data.timeStep = 1e-4;  // S1's
   if (trajectory)
@@ -100,9 +103,13 @@ void BM_S1Step(benchmark::State& state) {
   state.SetLabel(std::string(motion == 1 ? "shaking" : motion == 2 ? "resting" : "settled") + ", " +
                  std::to_string(threads) + " thread(s)" +
                  (state.range(5) == 1 ? ", spring" : state.range(5) == 2 ? ", viscous" : "") +
-                 (state.range(6) == 1 ? ", principal curvatures" : ""));
+                 (state.range(6) == 1 ? ", principal curvatures" : "") + (core ? "" : ", without the core"));
 }
+
+void BM_S1Step(benchmark::State& state) { s1Step(state, true); }
 BENCHMARK(BM_S1Step)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+// What the deep-overlap core costs: the same steps without it.
+BENCHMARK_CAPTURE(s1Step, without_core, false)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // With friction: the spring and the viscous law.
 BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {0}, {0}, {0}, {1, 2}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // The ellipse of both principal curvatures (issue 13), settled and resting, frictionless and with the spring.

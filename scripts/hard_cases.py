@@ -1,6 +1,6 @@
 """Scene S8 of doc/scenes.md: the hard cases every contact change must pass, pass or fail.
 
-    /usr/bin/python3 scripts/hard_cases.py [--quick] [--only s1 drum pressed coarse collisions]
+    /usr/bin/python3 scripts/hard_cases.py [--quick] [--only s1 drum newuser pressed coarse collisions]
         [--shapes gummy_bear pear ...] [--seeds 1 2 3 4 5] [--threads 2] [--orientations 200] [--output out/hard_cases]
 
 The code, and what it writes: roundedmesh_study.hard_cases.

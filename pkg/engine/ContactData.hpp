@@ -105,6 +105,7 @@ struct PairRecord {
   Real side = 0;           // then: where the body's centre is against it [m] (StopRules.cpp, faceSide)
   Vector3r position = Vector3r::Zero();  // the body's centre [m]
   Vector3r point = Vector3r::Zero();     // the pair's centre of pressure [m] (PairSummary::point), if they touched
+  Real closing = 0;        // how fast the two sides approach there along the pair's normal [m/s] (< 0: they part)
 };
 
 // Why a step must not be kept (StopRules.hpp): the body's centre crossed the other side's face since the last

@@ -130,7 +130,7 @@ PairResult resolvePair(const ContactModel& model, const ContactData& data, const
   pairGeometry(model, data, pair, scratch, statistics, candidates);
   PairResult result = pairLoad(model, data, pair, scratch, contacts, spring);
   result.statistics += statistics;
-  const CoreLoad core = corePair(model, data, pair);
+  const CoreLoad core = corePair(model, data, pair, result.summary);
   if (core.contacts > 0) {
     result.onBody.force += core.force;
     result.onBody.torque += core.torque;

@@ -1,45 +1,60 @@
 #include "pkg/engine/CorePair.hpp"
 
+#include <array>
+
 #include "pkg/common/Overloaded.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"  // facetOwns
+#include "pkg/math/ClosestPoint.hpp"
 #include "pkg/math/Segment.hpp"
 #include "pkg/phys/HertzPhys.hpp"
 
 namespace roundedmesh {
 namespace {
 
-// A body's core in the frame centred on its position with the global axes: centres [m], radii [m], and the radius of
-// the ball about the position that holds them all.
+// A body's core in the frame centred on its position with the global axes: centres [m] and radii [m], without an
+// allocation (a step evaluates it for every pair).
 struct PlacedCore {
-  std::vector<Vector3r> centres;
-  std::vector<Real> radii;
-  Real reach = 0;
+  std::array<Vector3r, InscribedSpheres::kMaxSpheres> centres;
+  std::array<Real, InscribedSpheres::kMaxSpheres> radii;
+  int count = 0;
 };
 
-PlacedCore placedCore(const RoundedMesh& mesh, const Quaternionr& orientation, Real inset) {
-  const InscribedSpheres& spheres = mesh.inscribedSpheres();
+PlacedCore placedCore(const InscribedSpheres& spheres, const Quaternionr& orientation, Real inset) {
   PlacedCore core;
   const Matrix3r rotation = orientation.toRotationMatrix();
-  for (size_t i = 0; i < spheres.centres.size(); ++i) {
-    core.centres.push_back(rotation * spheres.centres[i]);
-    core.radii.push_back((1 - inset) * spheres.radii[i]);
-    core.reach = std::max(core.reach, spheres.centres[i].norm() + core.radii.back());
+  core.count = static_cast<int>(spheres.radii.size());
+  for (int i = 0; i < core.count; ++i) {
+    core.centres[i] = rotation * spheres.centres[i];
+    core.radii[i] = (1 - inset) * spheres.radii[i];
   }
   return core;
 }
 
-void againstCore(const PlacedCore& core, const PlacedCore& other, const Vector3r& offset, Real modulus, CoreLoad& load) {
-  for (size_t i = 0; i < core.centres.size(); ++i) {
-    if ((core.centres[i] - offset).norm() >= core.radii[i] + other.reach) continue;
-    for (size_t j = 0; j < other.centres.size(); ++j) {
-      const Vector3r apart = core.centres[i] - (offset + other.centres[j]);
+// Two cores, in body 1's frame: body 2's spheres brought there, each tested against the box of body 1's core first.
+void againstCore(const InscribedSpheres& a, const BodyState& s1, const InscribedSpheres& b, const BodyState& s2,
+                 Real inset, Real modulus, CoreLoad& load) {
+  const Vector3r offset = s2.position - s1.position;
+  if (offset.norm() >= a.reach + b.reach) return;
+  const Matrix3r R1 = s1.orientation.toRotationMatrix();
+  const Matrix3r R12 = R1.transpose() * s2.orientation.toRotationMatrix();
+  const Vector3r t = R1.transpose() * offset;
+  CoreLoad inBody;
+  for (size_t j = 0; j < b.radii.size(); ++j) {
+    const Vector3r c = R12 * b.centres[j] + t;
+    const Real rho2 = (1 - inset) * b.radii[j];
+    if (a.box.squaredExteriorDistance(c) >= rho2 * rho2) continue;
+    for (size_t i = 0; i < a.radii.size(); ++i) {
+      const Real rho1 = (1 - inset) * a.radii[i];
+      const Vector3r apart = a.centres[i] - c;
       const Real distance = apart.norm();
-      const Real delta = core.radii[i] + other.radii[j] - distance;
+      const Real delta = rho1 + rho2 - distance;
       if (delta <= 0 || distance == 0) continue;
-      load.add(core.centres[i], apart / distance, delta, core.radii[i] * other.radii[j] / (core.radii[i] + other.radii[j]),
-               modulus);
+      inBody.add(a.centres[i], apart / distance, delta, rho1 * rho2 / (rho1 + rho2), modulus);
     }
   }
+  load = inBody;
+  load.force = R1 * inBody.force;
+  load.torque = R1 * inBody.torque;
 }
 
 // The core against a partner's solid: nearest(x, normal, height) gives, for a core centre x, the unit normal along
@@ -47,7 +62,7 @@ void againstCore(const PlacedCore& core, const PlacedCore& other, const Vector3r
 // this partner does not push it. partnerRadius: a Sphere's radius, infinite for a flat surface (R = rho).
 template <class Nearest>
 void againstSolid(const PlacedCore& core, Real partnerRadius, Real modulus, const Nearest& nearest, CoreLoad& load) {
-  for (size_t i = 0; i < core.centres.size(); ++i) {
+  for (int i = 0; i < core.count; ++i) {
     const Real rho = core.radii[i];
     Vector3r normal;
     Real height;
@@ -83,15 +98,30 @@ void againstFacet(const PlacedCore& core, const Facet& facet, const BodyState& b
   const std::array<Vector3r, 3>& corners = placed.corners;
   if (!hasArea(corners)) return;
   const Vector3r normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
+  const int side = facetSide(placed);
+  const Vector3r towardBody = side == 1 ? Vector3r(-normal) : normal;
   const Vector3r t1 = normal.unitOrthogonal(), t2 = normal.cross(t1);  // (t1, t2, normal) right-handed
   auto inPlane = [&](const Vector3r& x) { return Vector2r((x - corners[0]).dot(t1), (x - corners[0]).dot(t2)); };
   std::vector<Vector2r> outline;
+  std::vector<bool> open;  // outline edge k (outline[k] to outline[k + 1]): nothing goes on beyond it on the body's side
   if (placed.weld) {
-    for (const Vector3r& x : placed.outline) outline.push_back(inPlane(x));  // counter-clockwise about the normal
+    for (size_t k = 0; k < placed.outline.size(); ++k) {  // counter-clockwise about the normal
+      outline.push_back(inPlane(placed.outline[k]));
+      open.push_back(!placed.weld->outlineClosed[k][side]);
+    }
   } else {
     for (const Vector3r& x : corners) outline.push_back(inPlane(x));
     if (cross2(outline[1] - outline[0], outline[2] - outline[0]) < 0) std::swap(outline[1], outline[2]);
+    open.assign(3, true);
   }
+  // How far from p the sheet's nearest open edge is, in its plane.
+  auto toOpenEdge = [&](const Vector2r& p) {
+    Real nearest = kInfinity;
+    const size_t n = outline.size();
+    for (size_t k = 0; k < n; ++k)
+      if (open[k]) nearest = std::min(nearest, (p - closestOnSegment(p, outline[k], outline[(k + 1) % n])).norm());
+    return nearest;
+  };
   const std::array<Vector2r, 3> own{inPlane(corners[0]), inPlane(corners[1]), inPlane(corners[2])};
   const FacetWeld* weld = placed.weld;
   auto owns = [&](const Vector2r& q) {
@@ -107,8 +137,14 @@ void againstFacet(const PlacedCore& core, const Facet& facet, const BodyState& b
   };
   againstSolid(core, kInfinity, modulus,
                [&](const Vector3r& x, Vector3r& pushed, Real& height) {
-                 const Vector2r q = nearestOnOutline(outline, inPlane(x));
+                 const Vector2r p = inPlane(x), q = nearestOnOutline(outline, p);
                  if (!owns(q)) return false;
+                 const Real front = towardBody.dot(x - corners[0]);
+                 if (q == p && front < 0 && -front < toOpenEdge(p)) {  // came through the sheet: pushed back
+                   pushed = towardBody;
+                   height = front;
+                   return true;
+                 }
                  const Vector3r away = x - (corners[0] + q.x() * t1 + q.y() * t2);
                  height = away.norm();
                  if (height == 0) return false;
@@ -154,7 +190,7 @@ void againstBox(const PlacedCore& core, const Box& box, const BodyState& body, c
 
 }  // namespace
 
-CoreLoad corePair(const ContactModel& model, const ContactData& data, const BodyPair& pair) {
+CoreLoad corePair(const ContactModel& model, const ContactData& data, const BodyPair& pair, const PairSummary& contacts) {
   CoreLoad load;
   const Real inset = model.options.coreInset;
   if (!(inset < 1)) return load;
@@ -165,15 +201,44 @@ CoreLoad corePair(const ContactModel& model, const ContactData& data, const Body
   const HertzMaterial& otherMaterial =
       otherIsBody ? model.bodies[pair.other].material : model.partners[pair.other - bodyCount].material;
   const Real modulus = Ip2_HertzMaterial_HertzMaterial_HertzPhys(body.material, otherMaterial).effectiveModulus;
-  const PlacedCore core = placedCore(*body.mesh, s1.orientation, inset);
+  const InscribedSpheres& spheres = body.mesh->inscribedSpheres();
   if (otherIsBody) {
+    const RoundedMesh& mesh2 = *model.bodies[pair.other].mesh;
+    const InscribedSpheres& other = mesh2.inscribedSpheres();
     const BodyState& s2 = data.bodyStates[pair.other];
-    const Vector3r offset = s2.position - s1.position;
-    const PlacedCore other = placedCore(*model.bodies[pair.other].mesh, s2.orientation, inset);
-    if (offset.norm() < core.reach + other.reach) againstCore(core, other, offset, modulus, load);
+    // Two core spheres touch only where the bodies' solids overlap by inset (r_i + r_j) or more: a pair whose triangle
+    // contacts are all shallower than half the least of that, or which has none and neither centre inside the other
+    // body, is skipped (most pairs of a packing, at the cost of a comparison).
+    const Real onset = inset * (spheres.radii.back() + other.radii.back());
+    const bool deep = contacts.triangleContacts > 0
+                          ? contacts.deepestOverlap >= 0.5 * onset
+                          : body.mesh->solidDistance().at(s1.orientation.conjugate() * (s2.position - s1.position)) == 0 ||
+                                mesh2.solidDistance().at(s2.orientation.conjugate() * (s1.position - s2.position)) == 0;
+    if (deep) againstCore(spheres, s1, other, s2, inset, modulus, load);
     return load;
   }
+  // A partner farther from the body's centre than its core reaches touches no core sphere.
   const BodyState& s2 = data.partnerStates[pair.other - bodyCount];
+  const Vector3r centre = s1.position;
+  const Real reach = spheres.reach;
+  const bool beyond = std::visit(
+      Overloaded{[&](const Facet& facet) {
+                   const std::array<Vector3r, 3> c = facetCorners(facet, s2.position, s2.orientation);
+                   return (centre - closestOnTriangle(centre, c[0], c[1], c[2])).norm() >= reach;
+                 },
+                 [&](const Box& box) {
+                   const Vector3r local = s2.orientation.conjugate() * (centre - s2.position);
+                   return (local - local.cwiseMax(-box.halfExtents).cwiseMin(box.halfExtents)).norm() >= reach;
+                 },
+                 [&](const Sphere& sphere) { return (centre - s2.position).norm() - sphere.radius >= reach; },
+                 [&](const Plane& plane) { return plane.normal.dot(centre - plane.point) >= reach; },
+                 [&](const Wall& wall) {
+                   const Plane plane = wallPlane(wall, s2.position, centre);
+                   return plane.normal.dot(centre - plane.point) >= reach;
+                 }},
+      model.partners[pair.other - bodyCount].shape);
+  if (beyond) return load;
+  const PlacedCore core = placedCore(spheres, s1.orientation, inset);
   std::visit(Overloaded{[&](const Facet& facet) { againstFacet(core, facet, s1, s2, modulus, load); },
                         [&](const Box& box) { againstBox(core, box, s1, s2, modulus, load); },
                         [&](const Sphere& sphere) {

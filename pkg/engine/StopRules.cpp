@@ -76,6 +76,9 @@ std::vector<StopReason> checkStopRules(const ContactModel& model, ContactData& d
     r.overlap = summary.triangleContacts > 0 ? summary.depth : 0;
     r.position = data.state(pair.body).position;
     r.point = summary.triangleContacts > 0 ? summary.point : r.position;
+    const BodyState &s1 = data.state(pair.body), &s2 = data.state(pair.other);
+    auto velocityAt = [&](const BodyState& s) -> Vector3r { return s.velocity + s.angularVelocity.cross(r.point - s.position); };
+    r.closing = (velocityAt(s1) - velocityAt(s2)).dot(summary.normal);
     const PartnerShape* shape = partnerShape(model, pair.other);
     r.flat = shape && isFlat(*shape);
     r.side = r.flat ? faceSide(*shape, data.state(pair.other), r.position) : 0;
@@ -88,7 +91,8 @@ std::vector<StopReason> checkStopRules(const ContactModel& model, ContactData& d
     if (!(r.overlap > model.options.stopOverlap * size)) continue;
     const auto found = std::lower_bound(last.begin(), last.end(), r, before);
     const Real previous = found != last.end() && !before(r, *found) ? found->overlap : 0;
-    if (r.overlap > previous) stops.push_back({StopCause::Overlap, r.body, r.other, r.overlap, size, r.point});
+    if (r.overlap > previous && (r.flat || r.closing >= 0))
+      stops.push_back({StopCause::Overlap, r.body, r.other, r.overlap, size, r.point});
   }
   // Every flat partner a body was near in the last step, whether or not their bounds still overlap.
   for (const PairRecord& r : last) {

@@ -8,7 +8,11 @@
 //             Box since the last step, in which their bounds overlapped (they touched, or were about to);
 //   overlap:  a pair whose overlap exceeds options.stopOverlap times the size of the smaller side (a rounded body's
 //             volume-equivalent radius, a sphere's radius; a flat partner has no size) and has grown since the last
-//             step (a pair that starts that deep is warned of by the scene, and may come apart). The overlap is the
+//             step; between two bodies, also not parting at the pair's centre of pressure along its normal (a pair
+//             placed that deep is warned of by rm.add_body and the scene, and its cores push it apart: the deepest
+//             triangle contact of so deep a pair can still grow a little as the bodies part). Against a flat partner
+//             the growth alone: a body whose centre has gone through a plane meets it from the far side, where
+//             "parting" would mean going on through. The overlap is the
 //             deepest triangle contact's along the pair's normal (PairSummary::depth): against a plane, its depth;
 //             between two bodies, about their approach, where the deepest triangle contact alone can run through
 //             both at a slant, twice as long.

@@ -34,6 +34,12 @@ int surfaceSide(const PlacedFacet& facet, const Vector3r& normal) {
 
 }  // namespace
 
+int facetSide(const PlacedFacet& facet) {
+  const std::array<Vector3r, 3>& c = facet.corners;
+  const Vector3r normal = (c[1] - c[0]).cross(c[2] - c[0]).normalized();
+  return facet.weld ? surfaceSide(facet, normal) : (normal.dot(c[0]) > 0 ? 1 : 0);
+}
+
 bool facetOwns(const std::array<Vector2r, 3>& corners, const FacetWeld& weld, const Vector2r& p) {
   Real size = 0;
   for (int i = 0; i < 3; ++i) size = std::max(size, (corners[(i + 1) % 3] - corners[i]).norm());
@@ -53,9 +59,8 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFac
   const std::array<Vector3r, 3>& corners = facet.corners;
   if (!hasArea(corners)) return;  // a sliver with collinear corners: no plane, nothing to push with
   const Vector3r normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
-  // The body's side (FacetWeld's side 0: that of the normal of the corners' order); n12 points from the body (its
-  // centre is body 1's origin) into the facet.
-  const int side = facet.weld ? surfaceSide(facet, normal) : (normal.dot(corners[0]) > 0 ? 1 : 0);
+  // n12 points from the body (its centre is body 1's origin) into the facet.
+  const int side = facetSide(facet);
   ContactFace face;
   face.origin = corners[0];
   face.normal = side == 1 ? normal : Vector3r(-normal);

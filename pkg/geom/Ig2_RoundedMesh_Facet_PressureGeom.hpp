@@ -25,6 +25,11 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFac
                                         const RelativeMotion& motion, GeomOutput out,
                                         CurvatureModel model = CurvatureModel::Mean);
 
+// The side of the facet (FacetWeld's side 0: that of the normal (c1 - c0) x (c2 - c0), 1 the other) the body whose
+// centre is the frame's origin is on: its plane's side, or for a welded facet the surface's, which outside a ridge
+// (above a lifter's apex, past the plane's reach) is the other.
+int facetSide(const PlacedFacet& facet);
+
 // Whether point p of the facet's plane, in the coordinates `inPlane` gives, belongs to the facet among its panel's
 // members: inside it, or on an edge or at a corner it owns (FacetWeld). Within a billionth of the facet's size of an
 // edge or corner, the point is taken to be on it, so that every member decides alike despite round-off.

@@ -106,6 +106,9 @@ InscribedSpheres inscribedSpheres(const RoundedMesh& mesh) {
   for (size_t c : chosen) {
     out.centres.push_back(centres[c]);
     out.radii.push_back(radii[c]);
+    out.reach = std::max(out.reach, centres[c].norm() + radii[c]);
+    out.box.extend(centres[c] - Vector3r::Constant(radii[c]));
+    out.box.extend(centres[c] + Vector3r::Constant(radii[c]));
   }
   return out;
 }

@@ -29,6 +29,8 @@ struct InscribedSpheres {
 
   std::vector<Vector3r> centres;
   std::vector<Real> radii;
+  Real reach = 0;                     // the radius of the ball about the origin that holds them [m]
+  Eigen::AlignedBox<Real, 3> box;     // the box that holds them [m]
 };
 
 InscribedSpheres inscribedSpheres(const RoundedMesh& mesh);

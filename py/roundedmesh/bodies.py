@@ -12,11 +12,14 @@ import math
 import numbers
 import warnings
 
+import numpy as np
+
 from yade import Body, Material, O, Shape
 from yade import Sphere as YadeSphere
 from yade.minieigenHP import Quaternion, Vector3
 
-from ._core import HertzMaterial, Mesh, partner_kind
+from ._core import DEEPEST_OVERLAP, HertzMaterial, Mesh, partner_kind
+from .meshfiles import equivalent_radius
 from .model_choice import cheapest_model
 from ._records import (_engine_options, _load_mesh, _material, _material_record, _new_revision, _set_tag, _store_mesh,
                        _tag, _tags_named)
@@ -159,10 +162,63 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None, error=None):
     body.state.pos = pos
     body.state.ori = ori
     key = _store_mesh(mesh)
+    others = _rounded_body_meshes()
     body_id = O.bodies.append(body)
     _set_tag(f"body.{body_id}", json.dumps({"mesh": key, "material": _material_record(material)}))
     _new_revision()
+    _warn_placed_inside(body_id, mesh, pos, ori, others)
+    _placed.update(revision=_tag("revision"), meshes={**others, body_id: key})
     return body_id
+
+
+# {body id: mesh key} of the scene's rounded bodies at its revision, kept by add_body: a scene built body by body
+# reads its records once, not once per body.
+_placed = {"revision": None, "meshes": {}}
+
+
+def _rounded_body_meshes():
+    """{body id: mesh key} of the current scene's rounded bodies."""
+    if _placed["revision"] is None or _placed["revision"] != _tag("revision"):
+        _placed.update(revision=None, meshes={int(i): json.loads(r)["mesh"] for i, r in _tags_named("body").items()})
+    return _placed["meshes"]
+
+
+def _inscribed(mesh, pos, ori):
+    """(centres (k, 3) [m], radii (k,) [m]) of the mesh's inscribed spheres placed at pos, turned by ori."""
+    centres, radii = mesh.inscribed_spheres
+    rotation = np.array([[ori.toRotationMatrix()[i, j] for j in range(3)] for i in range(3)])
+    return np.asarray(centres) @ rotation.T + np.array(pos), np.asarray(radii)
+
+
+def _warn_placed_inside(body_id, mesh, pos, ori, others):
+    """Warns when the new body overlaps rounded bodies already there (`others`, {id: mesh key}) by more than
+    DEEPEST_OVERLAP of the smaller r_eq, naming them: by the overlap of the bodies' inscribed spheres
+    (Mesh.inscribed_spheres), which lie inside the bodies, so the bodies overlap at least that much. The run would
+    start with a contact past the Hertz range, held apart only by the bodies' cores (doc/physics.md, "Deep overlaps:
+    the core")."""
+    states = {i: body.state for i in others if (body := _body_or_none(i)) is not None}
+    if not states:
+        return
+    centres, radii = _inscribed(mesh, pos, ori)
+    reach = float((np.linalg.norm(centres - np.array(pos), axis=1) + radii).max())
+    size = equivalent_radius(mesh)
+    within = (reach + 3 * size) ** 2  # no mesh reaches farther than 3 r_eq beyond its inscribed spheres
+    inside = []
+    for other_id in [i for i, state in states.items() if (state.pos - pos).squaredNorm() < within]:
+        other_mesh = _load_mesh(others[other_id])
+        state = states[other_id]
+        others_centres, other_radii = _inscribed(other_mesh, state.pos, state.ori)
+        overlap = float((radii[:, None] + other_radii[None, :]
+                         - np.linalg.norm(centres[:, None] - others_centres[None, :], axis=2)).max())
+        smaller = min(size, equivalent_radius(other_mesh))
+        if overlap > DEEPEST_OVERLAP * smaller:
+            inside.append((overlap / smaller, other_id, overlap))
+    if inside:
+        listed = "; ".join(f"rounded body {other_id} by at least {overlap:.3g} m ({fraction:.2f} of the smaller r_eq)"
+                           for fraction, other_id, overlap in sorted(inside, reverse=True)[:10])
+        warnings.warn(f"add_body: rounded body {body_id} is placed inside {listed}: deeper than a Hertz contact "
+                      f"reaches ({DEEPEST_OVERLAP:g} r_eq), where only the bodies' cores push them apart, and hard. "
+                      "Place it apart, or remove it with O.bodies.erase", RuntimeWarning, stacklevel=3)
 
 
 def _mesh_for_error(mesh, error):

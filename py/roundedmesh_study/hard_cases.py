@@ -5,6 +5,9 @@ users do:
     s1          S1 (scripts/s1_packing.py) through the shaking (0.75 s, 7,500 steps) for every shape and seed:
                 it must complete, with no pair deeper than --s1-overlap (0.3) of the smaller r_eq at any step
     drum        S7 whole (scripts/examples/example_drum.py, 20,000 steps): it must complete
+    newuser     the new user's drum (scripts/validation/newuser_drum.py): YADE's facetCylinder with thin-plate lifters,
+                YADE's GTS horses and gummy bears at E = 1 MPa dropped in from a lattice, and the same with bears only,
+                20,000 steps each with the defaults: each must complete (its deepest pair and fastest body reported)
     pressed     two gummy bears, two pears, and a gummy bear on a Wall, a Facet and a Box, pressed from first touch
                 to 0.5 r_eq along a random direction at --orientations random orientations
                 (scripts/validation/deep_monotonicity.py, partner_monotonicity.py): the force along the push must
@@ -18,7 +21,7 @@ users do:
                 off-centre, at the Hertz range (0.05 r_eq) and deep (0.3 r_eq), O.dt = dt_c / 50
                 (scripts/validation/energy_conservation.py): the kinetic energy must come back within 0.5 % and 1 %
 
-    /usr/bin/python3 scripts/hard_cases.py [--quick] [--only s1 drum pressed coarse collisions]
+    /usr/bin/python3 scripts/hard_cases.py [--quick] [--only s1 drum newuser pressed coarse collisions]
         [--shapes gummy_bear pear ...] [--seeds 1 2 3 4 5] [--threads 2] [--orientations 200] [--output out/hard_cases]
 
 --quick is the short form CI runs (tests/python/test_hard_cases.py): S1 of the gummy bears through the shaking,
@@ -40,7 +43,7 @@ import time
 
 from . import SCRIPTS
 
-CASES = ("s1", "drum", "pressed", "coarse", "collisions")
+CASES = ("s1", "drum", "newuser", "pressed", "coarse", "collisions")
 S1_SHAPES = ("sphere", "icosphere12", "icosphere42", "icosphere162", "pear", "gummy_bear")
 SHAKING = 0.75              # S1's shaking [s]
 S1_OVERLAP = 0.3            # the deepest pair overlap allowed in S1 [r_eq]
@@ -107,6 +110,18 @@ def drum_check(args, report):
     lines = (done.stdout + done.stderr).strip().splitlines()
     report.add("drum", "S7 whole: completes", done.returncode == 0, done.returncode, 0, "exit status",
                lines[-1][:300] if lines else "", time.perf_counter() - start)
+
+
+def newuser_checks(args, report):
+    for contents in ("mixed", "bears"):
+        command = [sys.executable, os.path.join(SCRIPTS, "validation", "newuser_drum.py"), "--contents", contents,
+                   "--output", os.path.join(args.output, "newuser_drum")]
+        start = time.perf_counter()
+        done = subprocess.run(command, capture_output=True, text=True)
+        lines = (done.stdout + done.stderr).strip().splitlines()
+        last = next((line for line in reversed(lines) if line.startswith(f"{contents} roundedmesh:")), lines[-1] if lines else "")
+        report.add("newuser", f"{contents}: completes 20,000 steps", done.returncode == 0, done.returncode, 0,
+                   "exit status", last[:400], time.perf_counter() - start)
 
 
 def read_csv(path):
@@ -315,8 +330,8 @@ def main(argv):
     command = shlex.join([sys.executable] + sys.argv)
     print(f"machine: {machine()}\ncommand: {command}", flush=True)
     report = Report()
-    runners = {"s1": s1_checks, "drum": drum_check, "pressed": pressed_checks, "coarse": coarse_checks,
-               "collisions": collision_checks}
+    runners = {"s1": s1_checks, "drum": drum_check, "newuser": newuser_checks, "pressed": pressed_checks,
+               "coarse": coarse_checks, "collisions": collision_checks}
     for case in CASES:
         if case in args.only:
             runners[case](args, report)

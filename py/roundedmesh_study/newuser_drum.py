@@ -7,7 +7,7 @@ plates, soft bodies and a real mesh, where the contact must keep repelling howev
 
 The drum: `geom.facetCylinder` of radius 0.27 m (0.54 m across) and length 0.4 m about the y axis, 24 panels, both
 ends closed; four lifters, radial plates 6 cm high of two Facets each (`utils.facet`), standing on the mantle's panel
-edges at 0, 90, 180 and 270 degrees; `RotationEngine` at 3 rad/s from t = 0 (the rim moves at 0.81 m/s); gravity
+edges at 0, 90, 180 and 270 degrees (example_containers.py's lifter_plates); `RotationEngine` at 3 rad/s from t = 0 (the rim moves at 0.81 m/s); gravity
 (0, 0, -9.81) m/s^2. Facets: E = 100 MPa, nu = 0.3, mu = 0.4.
 The contents, E = 1 MPa, nu = 0.4, 1200 kg/m^3, A = 0.05 s, mu = 0.5 (roundedmesh.HertzMaterial): `mixed`, 20 of
 YADE's GTS horses (examples/gts-horse/horse.coarse.gts, Debian's yade package, scaled to 5 cm and prepared by
@@ -30,6 +30,7 @@ the run completed, its deepest pair, fastest body and ms per step.
 """
 import argparse
 import csv
+import importlib.util
 import math
 import os
 import sys
@@ -37,6 +38,8 @@ import time
 import warnings
 
 import numpy as np
+
+from . import SCRIPTS
 
 RADIUS, LENGTH, SEGMENTS = 0.27, 0.4, 24   # [m], [m], panels
 LIFTER_HEIGHT = 0.06                        # [m]
@@ -95,6 +98,15 @@ def poses(contents, seed):
     return list(zip(kinds, nodes, quaternions))
 
 
+def example_containers():
+    """scripts/examples/example_containers.py as a module: its lifter plates are the ones users are shown."""
+    spec = importlib.util.spec_from_file_location("example_containers",
+                                                  os.path.join(SCRIPTS, "examples", "example_containers.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
 def add_drum():
     """The drum's Facets (fixed) and the RotationEngine turning them."""
     from yade import O, RotationEngine, geom, utils
@@ -102,15 +114,7 @@ def add_drum():
     axis_to_y = Quaternion(Vector3(1, 0, 0), math.pi / 2)
     ids = list(O.bodies.append(geom.facetCylinder((0, 0, 0), RADIUS, LENGTH, orientation=axis_to_y,
                                                    segmentsNumber=SEGMENTS, wallMask=7, fixed=True)))
-    plates = []
-    for k in range(4):
-        angle = k * math.pi / 2
-        outer = Vector3(RADIUS * math.cos(angle), 0, RADIUS * math.sin(angle))
-        inner = outer * ((RADIUS - LIFTER_HEIGHT) / RADIUS)
-        y0, y1 = Vector3(0, -LENGTH / 2, 0), Vector3(0, LENGTH / 2, 0)
-        plates += [utils.facet([outer + y0, inner + y0, inner + y1], fixed=True),
-                   utils.facet([outer + y0, inner + y1, outer + y1], fixed=True)]
-    ids += list(O.bodies.append(plates))
+    ids += list(O.bodies.append(example_containers().lifter_plates(utils, Vector3, RADIUS, LENGTH, LIFTER_HEIGHT)))
     rotation = RotationEngine(ids=ids, rotationAxis=(0, 1, 0), rotateAroundZero=True, zeroPoint=(0, 0, 0),
                               angularVelocity=ANGULAR_VELOCITY)
     return ids, rotation

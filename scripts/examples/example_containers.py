@@ -48,8 +48,14 @@ def drum_container(utils, geom, O, Quaternion, Vector3):
     axis_to_y = Quaternion(Vector3(1, 0, 0), math.pi / 2)
     ids = O.bodies.append(geom.facetCylinder((0, 0, 0), radius, length, orientation=axis_to_y,
                                              segmentsNumber=segments, wallMask=7, fixed=True))
-    # The plates stand where the mantle's panels meet (facetCylinder puts a corner at angle 0 and every 15 degrees),
-    # welded to them.
+    ids += O.bodies.append(lifter_plates(utils, Vector3, radius, length, height))
+    return ids, [RotationAbout(ids)], lattice((-0.1, -0.15, -0.1), (3, 4, 3), SPACING, 36)
+
+
+def lifter_plates(utils, Vector3, radius, length, height):
+    """Four radial plates `height` [m] high of two fixed Facets each, along a drum of `radius` and `length` [m] about
+    the y axis, at 0, 90, 180 and 270 degrees: where facetCylinder puts its panels' corners (one at angle 0, every
+    360 / segments degrees), so that they are welded to the mantle."""
     lifters = []
     for k in range(4):
         angle = k * math.pi / 2
@@ -58,8 +64,7 @@ def drum_container(utils, geom, O, Quaternion, Vector3):
         y0, y1 = Vector3(0, -length / 2, 0), Vector3(0, length / 2, 0)
         lifters += [utils.facet([outer + y0, inner + y0, inner + y1], fixed=True),
                     utils.facet([outer + y0, inner + y1, outer + y1], fixed=True)]
-    ids += O.bodies.append(lifters)
-    return ids, [RotationAbout(ids)], lattice((-0.1, -0.15, -0.1), (3, 4, 3), SPACING, 36)
+    return lifters
 
 
 def RotationAbout(ids):

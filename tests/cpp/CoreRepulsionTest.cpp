@@ -34,6 +34,15 @@ const BodyMesh& cigar() {
   return mesh;
 }
 
+// The body axis along which the mesh is longest.
+int longAxis(const RoundedMesh& mesh) {
+  AlignedBox3r extent;
+  for (const Vector3r& v : mesh.vertices()) extent.extend(v);
+  int axis;
+  extent.sizes().maxCoeff(&axis);
+  return axis;
+}
+
 Real distanceToMesh(const RoundedMesh& mesh, const Vector3r& x) {
   Real best = kInfinity;
   for (const Triangle& t : mesh.triangles())
@@ -51,7 +60,9 @@ TEST(InscribedSpheres, EachIsInsideTheMeshAndTouchesIt) {
     for (size_t i = 0; i < spheres.radii.size(); ++i) {
       EXPECT_NEAR(spheres.radii[i], distanceToMesh(shape, spheres.centres[i]), 1e-15);
       EXPECT_EQ(shape.solidDistance().at(spheres.centres[i]), 0);
-      if (i > 0) EXPECT_LE(spheres.radii[i], spheres.radii[i - 1]);  // largest first
+      if (i > 0) {
+        EXPECT_LE(spheres.radii[i], spheres.radii[i - 1]);  // largest first
+      }
     }
   }
 }
@@ -67,9 +78,7 @@ TEST(InscribedSpheres, ABallHasOneSphereAndASpheroidAChainAlongItsAxis) {
   const InscribedSpheres& chain = cigar().shape().inscribedSpheres();
   EXPECT_GT(chain.radii.size(), 4u);
   Real reach = 0;
-  AlignedBox3r box;
-  for (const Vector3r& v : cigar().shape().vertices()) box.extend(v);
-  const int axis = [&] { int i; box.sizes().maxCoeff(&i); return i; }();
+  const int axis = longAxis(cigar().shape());
   for (size_t i = 0; i < chain.radii.size(); ++i) {
     reach = std::max(reach, std::abs(chain.centres[i][axis]) + chain.radii[i]);
     EXPECT_LE(chain.radii[i], 0.01 + 1e-12);
@@ -97,8 +106,8 @@ TEST(CoreRepulsion, TwoBallsAddHertzOfTheirCoresAndNothingBefore) {
     const Vector3r core = with.onSecond.force - without.onSecond.force;
     const Real expected = d < 2 * rho ? 4.0 / 3 * modulus * std::sqrt(rho / 2) * std::pow(2 * rho - d, 1.5) : 0;
     if (expected == 0) {
-      EXPECT_EQ(with.onSecond.force, without.onSecond.force) << d;
-    } else {  // NOLINT
+      EXPECT_EQ((with.onSecond.force - without.onSecond.force).norm(), 0) << d;
+    } else {
       EXPECT_NEAR(core.dot(u), expected, 1e-9 * expected) << d;
       EXPECT_LT((core - core.dot(u) * u).norm(), 1e-9 * expected) << d;
     }
@@ -109,7 +118,13 @@ struct CoredPair {
   ContactModel model;
   ContactData data;
 
-  CoreLoad load() const { return corePair(model, data, {0, 1}); }
+  // As for a pair with a triangle contact deeper than any core's onset: the cores are always looked at.
+  CoreLoad load() const {
+    PairSummary deep;
+    deep.triangleContacts = 1;
+    deep.deepestOverlap = 1;
+    return corePair(model, data, {0, 1}, deep);
+  }
 };
 
 // The core's force and torque are minus the gradient of its energy (central differences): its forces are central
@@ -149,16 +164,13 @@ TEST(CoreRepulsion, ItsWrenchIsMinusTheGradientOfItsEnergy) {
   }
 }
 
-// A cigar lying (its axis horizontal) 0.6 b deep in a Wall, in a Box's top and in a single Facet much larger than it: the same core
-// (to round-off), each core sphere Hertz's sphere on a plane, R = rho, delta = rho - h. The sheet pushes each core
+// A cigar lying (its axis horizontal) 0.6 b deep in a Wall, in a Box's top and in a single Facet much larger than it:
+// the same core (to round-off), each core sphere Hertz's sphere on a plane, R = rho, delta = rho - h. The sheet pushes each core
 // sphere on the side its centre is on: a cigar pushed through it from below meets the mirror image of the force
 // from above.
 TEST(CoreRepulsion, EveryFlatPartnerPushesTheCoreAsAPlaneAndASheetFromBothSides) {
   const RoundedBody body = roundedBody(0, cigar(), kRubber);
-  AlignedBox3r extent;
-  for (const Vector3r& v : cigar().shape().vertices()) extent.extend(v);
-  int axis;
-  extent.sizes().maxCoeff(&axis);
+  const int axis = longAxis(cigar().shape());
   const Quaternionr lying = Quaternionr::FromTwoVectors(Vector3r::Unit(axis), Vector3r(1, 0.3, 0).normalized());
   const InscribedSpheres& spheres = cigar().shape().inscribedSpheres();
   const Real modulus = Ip2_HertzMaterial_HertzMaterial_HertzPhys(kRubber, kFloor).effectiveModulus;
@@ -170,7 +182,7 @@ TEST(CoreRepulsion, EveryFlatPartnerPushesTheCoreAsAPlaneAndASheetFromBothSides)
     if (delta > 0) expected += 4.0 / 3 * modulus * std::sqrt(rho) * std::pow(delta, 1.5);
   }
   ASSERT_GT(expected, 0);
-  auto core = [&](const PartnerShape& partner, const BodyState& partnerState, const BodyState& state) {
+  auto core = [&](const PartnerShape& partner, const BodyState& partnerState, const BodyState& state) -> Vector3r {
     return partnerContact(body, state, partner, partnerState, kFloor, EngineOptions()).onFirst.force -
            partnerContact(body, state, partner, partnerState, kFloor, withoutCore()).onFirst.force;
   };
@@ -186,6 +198,33 @@ TEST(CoreRepulsion, EveryFlatPartnerPushesTheCoreAsAPlaneAndASheetFromBothSides)
   const Quaternionr mirrored = Quaternionr(Eigen::AngleAxis<Real>(M_PI, Vector3r::UnitX())) * lying;
   const Vector3r back = core(sheet, at(Vector3r::Zero()), at(Vector3r(position.x(), -position.y(), -position.z()), mirrored));
   EXPECT_NEAR(back.z(), -expected, 1e-9 * expected);
+}
+
+// A cigar standing on end, pushed 1.5 to 2.5 b into a Facet sheet far from its rim, its lowest core spheres' centres behind
+// the sheet: they came through it and are pushed back as by a Wall (delta = rho + their depth), from either side, so
+// the core keeps pushing harder along the push (each step's force above the last).
+TEST(CoreRepulsion, ACoreThroughASheetIsPushedBackAsByAWall) {
+  const RoundedBody body = roundedBody(0, cigar(), kRubber);
+  const int axis = longAxis(cigar().shape());
+  Real half = 0;
+  for (const Vector3r& v : cigar().shape().vertices()) half = std::max(half, std::abs(v[axis]));
+  const Facet sheet{{Vector3r(-1, -1, 0), Vector3r(2, -1, 0), Vector3r(-1, 2, 0)}, nullptr};
+  for (Real sense : {1.0, -1.0}) {
+    const Quaternionr standing = Quaternionr::FromTwoVectors(Vector3r::Unit(axis), sense * Vector3r::UnitZ());
+    Real last = 0;
+    for (Real depth : {0.015, 0.02, 0.025}) {
+      const BodyState state = at(Vector3r(0.001, 0.002, sense * (half - depth)), standing);
+      auto core = [&](const PartnerShape& partner) -> Vector3r {
+        return partnerContact(body, state, partner, at(Vector3r::Zero()), kFloor, EngineOptions()).onFirst.force -
+               partnerContact(body, state, partner, at(Vector3r::Zero()), kFloor, withoutCore()).onFirst.force;
+      };
+      const Vector3r wall = core(Wall{2, 0}), facet = core(sheet);
+      EXPECT_GT(sense * wall.z(), last) << sense << " " << depth;
+      EXPECT_LT((facet - wall).norm(), 1e-9 * wall.norm()) << sense << " " << depth;
+      last = sense * wall.z();
+    }
+    EXPECT_GT(last, 0);
+  }
 }
 
 }  // namespace

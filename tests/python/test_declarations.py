@@ -29,7 +29,7 @@ def test_a_material_record_names_every_field_and_restores_it():
 def test_the_engine_options_and_their_defaults_come_from_core():
     assert _core.ENGINE_OPTIONS == {"gamma": 10.0, "regime": "auto", "friction": "spring",
                                     "stop_overlap": _core.STOP_OVERLAP, "curvature": "mean", "normal": "pressure",
-                                    "threads": 0}
+                                    "core_inset": 0.25, "threads": 0}
     assert _core.ENGINE_CHOICES == {"regime": ("auto", "quadrature", "direct", "exact"),
                                     "friction": ("spring", "viscous"), "curvature": ("mean", "principal"),
                                     "normal": ("pressure", "energy")}
