@@ -17,7 +17,8 @@ whose centre ended on the other side of the plate from where it went below the e
 off to one side never does. Also the deepest pair over the drop (rm.statistics()["deepest_pair_fraction"], every
 step) and the largest number of touching core spheres. Hertz's own overlap for the impact, of a sphere of the bear's
 r_eq on a flat partner, (15 m v^2 / (16 E* sqrt(r_eq)))^(2/5), is printed per height: an edge is sharper, so deeper.
-Writes edge_drops.csv (height, orientation, outcome, through, deepest [r_eq], core contacts) and prints the table.
+Writes edge_drops.csv (height, orientation, outcome, through, deepest [r_eq], core contacts) and edge_drops.png (each
+drop's deepest pair by height and outcome), and prints the table.
 """
 import argparse
 import csv
@@ -72,6 +73,29 @@ def drop(mesh, height, ori, offset):
     return outcome, through, deepest, cores
 
 
+def plot(rows, heights, path):
+    """edge_drops.png: each drop's deepest pair by height, marked by its outcome."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    figure, axes = plt.subplots(figsize=(6, 4))
+    styles = {"off": ("C0", "o"), "resting": ("C2", "s"), "stopped": ("C3", "x")}
+    for kind, (colour, marker) in styles.items():
+        points = [(h, d) for h, _, outcome, _, d, _ in rows if outcome.startswith(kind)]
+        if points:
+            axes.scatter(*zip(*points), color=colour, marker=marker, label=kind)
+    through = [(h, d) for h, _, _, t, d, _ in rows if t]
+    if through:
+        axes.scatter(*zip(*through), color="k", marker="*", s=80, label="through the plate")
+    axes.set(xscale="log", xticks=heights, xticklabels=[f"{h:g}" for h in heights], xlabel="drop height [m]",
+             ylabel="deepest pair over the drop [r_eq]", title="a gummy bear dropped onto a plate's top edge")
+    axes.legend()
+    axes.grid(alpha=0.3)
+    figure.tight_layout()
+    figure.savefig(path, dpi=120)
+    plt.close(figure)
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--heights", nargs="+", type=float, default=[0.1, 0.3, 1.0])
@@ -114,6 +138,7 @@ def main(argv=None):
         for outcome, *_ in outcomes:
             if outcome.startswith("stopped"):
                 print(f"    {outcome}")
+    plot(rows, args.heights, os.path.join(args.output, "edge_drops.png"))
     with open(os.path.join(args.output, "edge_drops.csv"), "w", newline="") as f:
         f.write(f"# {machine()}\n# {command}\n")
         writer = csv.writer(f)
