@@ -1,4 +1,4 @@
-// The deep-overlap term (doc/physics.md, "Deep overlaps: the core"). Each rounded body carries a core: its inscribed
+// The deep-overlap term (doc/physics.md, "Deep overlaps and fast impacts", The core). Each rounded body carries a core: its inscribed
 // spheres (InscribedSpheres.hpp), each shrunk by `inset` of its radius r to rho = (1 - inset) r, so that it lies
 // inset r below the surface, inside the Hertz range of the radii there (a surface point an inscribed sphere touches
 // has both principal radii >= r). Where a pair overlaps past that range the cores meet, and each pair of touching

@@ -1,4 +1,4 @@
-// The inscribed spheres of a rounded body, from which its core is made (doc/physics.md, "Deep overlaps: the core"):
+// The inscribed spheres of a rounded body, from which its core is made (doc/physics.md, "Deep overlaps and fast impacts", The core):
 // spheres inside the flat mesh, each as large as it can be there (its radius the distance from its centre to the
 // surface), chosen one at a time after Ferellec and McDowell, Granular Matter 12 (2010) 459-467, so that their union
 // follows the shape: tips and limbs as well as the bulk.

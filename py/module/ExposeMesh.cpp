@@ -364,7 +364,7 @@ void exposeMesh() {
                       return bp::make_tuple(toArray(core.centres), toArray(core.radii));
                     },
                     "(centres (k, 3) [m], radii (k,) [m]), principal frame: the spheres inscribed in the mesh that its\n"
-                    "core is made of (doc/physics.md, 'Deep overlaps: the core'), largest first; the core's spheres are\n"
+                    "core is made of (doc/physics.md, 'Deep overlaps and fast impacts', The core), largest first; the core's spheres are\n"
                     "these shrunk by rm.engine(core_inset=...) of their radii")
       .add_property("normals", +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::normal)); },
                     "(m, 3) outward unit normal of each triangle")

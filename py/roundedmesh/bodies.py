@@ -194,8 +194,8 @@ def _warn_placed_inside(body_id, mesh, pos, ori, others):
     """Warns when the new body overlaps rounded bodies already there (`others`, {id: mesh key}) by more than
     DEEPEST_OVERLAP of the smaller r_eq, naming them: by the overlap of the bodies' inscribed spheres
     (Mesh.inscribed_spheres), which lie inside the bodies, so the bodies overlap at least that much. The run would
-    start with a contact past the Hertz range, held apart only by the bodies' cores (doc/physics.md, "Deep overlaps:
-    the core")."""
+    start with a contact past the Hertz range, held apart only by the bodies' cores (doc/physics.md, "Deep overlaps and fast
+    impacts", The core)."""
     states = {i: body.state for i in others if (body := _body_or_none(i)) is not None}
     if not states:
         return

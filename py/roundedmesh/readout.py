@@ -54,7 +54,7 @@ def statistics():
                                (the whole contact circle: no triangles, so not in candidates or rejected_*)
       core_contacts            touching pairs of core spheres (or of a core sphere and a partner): the deep-overlap
                                term, which acts only on pairs past the Hertz range of their own radii
-                               (doc/physics.md, "Deep overlaps: the core")
+                               (doc/physics.md, "Deep overlaps and fast impacts", The core)
       sliding_contacts         triangle and sphere contacts sliding: all of a pair's whose spring slides (under the
                                viscous law, each by Eq. 21)
       neighbour_rebuilds       whether the broad phase's neighbour list was rebuilt (0 or 1)

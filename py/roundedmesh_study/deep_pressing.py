@@ -1,5 +1,5 @@
 """Pressed to half a radius: does the contact keep repelling where the bodies' overlap keeps growing? (issue 38;
-doc/physics.md, "Deep overlaps: the core"; doc/validation.md, "Deep overlaps".)
+doc/physics.md, "Deep overlaps and fast impacts", The core; doc/validation.md, "Deep overlaps".)
 
     /usr/bin/python3 scripts/validation/deep_pressing.py [--cases bears pears wall sheet-front sheet-back]
         [--orientations 200] [--seed 1] [--output out/deep_pressing]

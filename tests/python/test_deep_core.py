@@ -1,4 +1,4 @@
-"""The deep-overlap core (issue 38; doc/physics.md, "Deep overlaps: the core"): rm.Mesh.inscribed_spheres, the option
+"""The deep-overlap core (issue 38; doc/physics.md, "Deep overlaps and fast impacts", The core): rm.Mesh.inscribed_spheres, the option
 rm.engine(core_inset=...), a core that adds nothing within the Hertz range and keeps pushing harder past it, on a
 Facet sheet from either side, and rm.add_body's warning of a body placed inside another."""
 import math
