@@ -9,6 +9,8 @@
 //                              curvature = 0: the paper's circle (mean curvature), 1: the ellipse of both principal
 //                              curvatures (estimated from the recorded mesh)
 //   s1Step/without_core/...    the same without the deep-overlap core (core_inset = 1): what the core costs
+//   s1Step/stages/...          the same with timing = 'stages': the CPU time of each stage inside the pairs (lists,
+//                              near searches, narrow phase, law, core) per step, and the near pairs scanned
 //   BM_S1NarrowPhase           Ig2 over every pair's candidates of the settled packing (time per contact)
 //   BM_S1Load/friction         Law2, node forces and friction over its triangle contacts (time per contact)
 // Counters per step: body pairs, candidates, contacts, candidates per contact, list rebuilds, stage times.
@@ -23,6 +25,7 @@
 
 #include "bench/RecordedScene.hpp"
 #include "bench/ThreadCounts.hpp"
+#include "pkg/bound/BatchedCandidates.hpp"
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/PairLoad.hpp"
 #include "pkg/engine/ContactStep.hpp"
@@ -50,8 +53,9 @@ ContactModel withFriction(ContactModel model, long friction) {
   return model;
 }
 
-// One step of S1's contacts; `core`: with the deep-overlap core (the default), or without it (core_inset = 1).
-void s1Step(benchmark::State& state, bool core) {
+// One step of S1's contacts; `core`: with the deep-overlap core (the default), or without it (core_inset = 1);
+// `stages`: timing = 'stages'.
+void s1Step(benchmark::State& state, bool core, bool stages) {
   const int threads = static_cast<int>(state.range(0));
   const int motion = static_cast<int>(state.range(1));
   const RecordedScene::Trajectory* trajectory = motion == 1 ? &scene().shaking : motion == 2 ? &scene().resting : nullptr;
@@ -63,6 +67,7 @@ void s1Step(benchmark::State& state, bool core) {
   if (state.range(4) > 0) model.skins.nearFactor = static_cast<Real>(state.range(4));
   if (state.range(6) == 1) model.options.pressure.curvature = CurvatureModel::Principal;
   if (!core) model.options.coreInset = 1;
+  if (stages) model.options.timing = Timing::Stages;
   ContactData data;
   data.timeStep = 1e-4;  // S1's
   if (trajectory)
@@ -100,16 +105,27 @@ void s1Step(benchmark::State& state, bool core) {
   state.counters["broad_ms"] = benchmark::Counter(1e3 * times.broadPhase, perStep);
   state.counters["pairs_ms"] = benchmark::Counter(1e3 * times.pairs, perStep);
   state.counters["reduction_ms"] = benchmark::Counter(1e3 * times.reduction, perStep);
+  if (stages) {
+    state.counters["near_pairs_scanned"] = benchmark::Counter(static_cast<double>(total.nearPairsScanned), perStep);
+    state.counters["lists_cpu_ms"] = benchmark::Counter(1e3 * total.cpu.lists, perStep);
+    state.counters["near_search_cpu_ms"] = benchmark::Counter(1e3 * total.cpu.nearSearch, perStep);
+    state.counters["narrow_phase_cpu_ms"] = benchmark::Counter(1e3 * total.cpu.narrowPhase, perStep);
+    state.counters["law_cpu_ms"] = benchmark::Counter(1e3 * total.cpu.law, perStep);
+    state.counters["core_cpu_ms"] = benchmark::Counter(1e3 * total.cpu.core, perStep);
+  }
   state.SetLabel(std::string(motion == 1 ? "shaking" : motion == 2 ? "resting" : "settled") + ", " +
                  std::to_string(threads) + " thread(s)" +
                  (state.range(5) == 1 ? ", spring" : state.range(5) == 2 ? ", viscous" : "") +
-                 (state.range(6) == 1 ? ", principal curvatures" : "") + (core ? "" : ", without the core"));
+                 (state.range(6) == 1 ? ", principal curvatures" : "") + (core ? "" : ", without the core") +
+                 ", batches on " + batchedTarget());
 }
 
-void BM_S1Step(benchmark::State& state) { s1Step(state, true); }
+void BM_S1Step(benchmark::State& state) { s1Step(state, true, false); }
 BENCHMARK(BM_S1Step)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+// Where the time of a step goes, stage by stage.
+BENCHMARK_CAPTURE(s1Step, stages, true, true)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // What the deep-overlap core costs: the same steps without it.
-BENCHMARK_CAPTURE(s1Step, without_core, false)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(s1Step, without_core, false, false)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // With friction: the spring and the viscous law.
 BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {0}, {0}, {0}, {1, 2}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // The ellipse of both principal curvatures (issue 13), settled and resting, frictionless and with the spring.

@@ -6,7 +6,7 @@ all, 13,500 steps of 1e-4 s.
 
     /usr/bin/python3 scripts/s1_packing.py [--shape gummy_bear|...|all] [--peers clumps level_sets]
         [--peers-only] [--count 250] [--seed 1] [--dt 1e-4] [--duration 1.35] [--sample 100] [--frames 14]
-        [--threads 1] [--checkpoint-every 1000] [--resume] [--plot-only] [--output out/s1]
+        [--threads 1] [--timing off|stages] [--checkpoint-every 1000] [--resume] [--plot-only] [--output out/s1]
 
 Runs, each in its own process and folder <output>/<run>:
     sphere        perfect spheres (rm.add_sphere): roundedmesh's analytic sphere, Hertz with Eq. 7 damping, the
@@ -46,8 +46,11 @@ centre of its spheres' union, within 0.3 mm of the bear's). Outputs of a run, in
                   empty), roundedmesh's stage times (pairs_ms, read_ms, write_ms [ms]), deepest_pair_r (the largest
                   overlap of a pair for its size: roundedmesh's over every step of the window, as the stop rule
                   measures it, over the smaller r_eq; the peers' deepest sphere or level-set penetration over r at
-                  the window's end), and the window's steps, wall time and CPU time per step [ms] (CPU of all the
-                  process's threads)
+                  the window's end), the window's steps, wall time and CPU time per step [ms] (CPU of all the
+                  process's threads), and roundedmesh's means over the window: window_pairs_ms (the pairs stage's
+                  wall time) and with --timing stages the CPU ms of the stages inside it (window_lists_cpu_ms,
+                  window_near_search_cpu_ms, window_narrow_phase_cpu_ms, window_law_cpu_ms, window_core_cpu_ms,
+                  summed over threads) and the near pairs scanned, candidates and body pairs per step
     packing.csv   at the end, Eq. 28: P(h) = N_h V_p / (A_b h) * 100 [%] for h = 0.01 ... 0.30 m, N_h the bodies
                   whose centre is less than h above the floor, V_p a body's volume [m^3], A_b = 0.16 m^2
     final_state.csv  every body's id, position [m] and orientation (w, x, y, z) at the end
@@ -55,6 +58,7 @@ centre of its spheres' union, within 0.3 mm of the bear's). Outputs of a run, in
                   run, median wall and CPU ms per step and median contact counts over the windows of shaking and
                   of settling, machine, command
     height.png    mean and max height and the box's position vs time for this run
+    timeline.png  with --timing stages: each window's wall ms per step split into roundedmesh's stages
     vtk/          ParaView series <run>.pvd of --frames frames (roundedmesh.export.VtkSeries; YADE's spheres as
                   part 1 for the sphere and clump runs; none for level sets, which YADE 2023.02a's VTKRecorder
                   cannot write), evenly spaced, the last at the end of the run
@@ -103,10 +107,14 @@ AMPLITUDE, PERIOD = 0.025, 0.25       # the box's shaking [m], [s]
 GRAVITY = 9.81                        # [m/s^2]
 PACKING_HEIGHTS = np.round(np.arange(1, 31) * 0.01, 2)  # h of Eq. 28 [m]
 SUBMERGED_HEIGHT = 0.10               # h at which the summary quotes P(h): below every packing's top [m]
+# With --timing stages, roundedmesh's stages inside the pairs (rm.engine(timing='stages'), CPU ms summed over threads)
+# and what they work through, as means over each window of height.csv (with the pairs stage's wall time).
+TIMED_STAGES = ("lists_cpu_ms", "near_search_cpu_ms", "narrow_phase_cpu_ms", "law_cpu_ms", "core_cpu_ms",
+                "near_pairs_scanned", "candidates", "body_pairs")
 FIELDS = ["step", "time_s", "phase", "box_z_m", "mean_height_m", "max_height_m", "mean_speed_m_s", "bodies",
           "outside", "body_pairs", "touching_pairs", "candidates", "contacts", "candidate_rebuilds",
           "near_rebuilds", "pairs_ms", "read_ms", "write_ms", "deepest_pair_r", "window_steps", "ms_per_step",
-          "cpu_ms_per_step"]
+          "cpu_ms_per_step", *(f"window_{stage}" for stage in ("pairs_ms", *TIMED_STAGES))]
 CHECKPOINT = "checkpoint.yade.gz"
 SCENE_TAG = "s1_packing.scene"  # O.tags key of the scene's parameters, to refuse a checkpoint of another scene
 
@@ -132,6 +140,9 @@ def parse(argv):
     parser.add_argument("--threads", type=int, default=1, help="OpenMP threads (default 1)")
     parser.add_argument("--normal", default="pressure", choices=("pressure", "energy"),
                         help="roundedmesh's normal law, rm.engine(normal=...) (default the paper's pressure)")
+    parser.add_argument("--timing", default="off", choices=("off", "stages"),
+                        help="roundedmesh's rm.engine(timing=...): 'stages' also records the CPU time of the stages "
+                             "inside the pairs per window in height.csv and draws timeline.png (default off)")
     parser.add_argument("--checkpoint-every", type=int, default=1000,
                         help="steps between checkpoints, a multiple of --sample (default 1000)")
     parser.add_argument("--resume", action="store_true", help="continue each run from its checkpoint")
@@ -186,7 +197,8 @@ def child_command(args, run, check):
     command = [sys.executable, os.path.abspath(__file__), "--run", run, "--count", str(args.count),
                "--seed", str(args.seed), "--dt", repr(args.dt), "--duration", repr(args.duration),
                "--sample", str(args.sample), "--frames", str(args.frames), "--threads", str(args.threads),
-               "--checkpoint-every", str(args.checkpoint_every), "--normal", args.normal, "--output", args.output]
+               "--checkpoint-every", str(args.checkpoint_every), "--normal", args.normal, "--timing", args.timing,
+               "--output", args.output]
     return command + (["--resume"] if args.resume else []) + (["--check"] if check else [])
 
 
@@ -272,7 +284,7 @@ def box_walls():
             utils.wall(-HALF_BASE, axis=1, sense=1), utils.wall(HALF_BASE, axis=1, sense=-1)]
 
 
-def build_roundedmesh(run, poses, normal="pressure"):
+def build_roundedmesh(run, poses, normal="pressure", timing="off"):
     """The bodies of `run` at `poses`, the box as roundedmesh partners and the engines. Returns (body ids, wall
     ids, description)."""
     O.reset()
@@ -289,7 +301,7 @@ def build_roundedmesh(run, poses, normal="pressure"):
     walls = [O.bodies.append(wall) for wall in box_walls()]
     for wall in walls:
         rm.assign_material(wall, BOX)
-    O.engines = [ForceResetter(), rm.engine(normal=normal), NewtonIntegrator(gravity=(0, 0, -GRAVITY), damping=0)]
+    O.engines = [ForceResetter(), rm.engine(normal=normal, timing=timing), NewtonIntegrator(gravity=(0, 0, -GRAVITY), damping=0)]
     if mesh is None:
         return bodies, walls, f"analytic spheres of radius {RADIUS} m"
     volume = (f"the sphere's mass; the mesh's volume {mesh.volume:.6g} m^3" if run in ICOSPHERE_SUBDIVISIONS
@@ -322,7 +334,7 @@ def build(args, run):
     """Resets YADE and builds S1 for `run`: the bodies on the lattice, the box and its motion, the recorder.
     Returns (body ids, wall ids, the box's HarmonicMotionEngine, description)."""
     poses = lattice_poses(args.count, args.seed)
-    bodies, walls, description = (build_roundedmesh(run, poses, args.normal) if run in SHAPES
+    bodies, walls, description = (build_roundedmesh(run, poses, args.normal, args.timing) if run in SHAPES
                                   else build_peer(run, poses))
     omega = 2 * math.pi / PERIOD
     x = omega * args.dt / 2  # see the module docstring: the step's mean velocity, not its first
@@ -356,6 +368,7 @@ class Recorder:
         self.last_step_end = None
         self.failure = None
         self.deepest = 0.0  # the window's largest pair overlap for its size (roundedmesh: every step)
+        self.window_sums = dict.fromkeys(("pairs_ms",) + TIMED_STAGES, 0.0)  # roundedmesh: every step's, summed
         self.reporter = Progress(args.steps - resumed_at, f"S1 {run}", interval=10.0)
         path = os.path.join(args.output, run, "height.csv")
         kept = [row for row in _csv_rows(path) if int(row[0]) <= resumed_at] if resumed_at else []
@@ -375,7 +388,10 @@ class Recorder:
         if done == self.resumed_at and done > 0:  # the checkpoint's own step: sampled before it was saved
             return
         if self.run in SHAPES and done > 0:
-            self.deepest = max(self.deepest, rm.statistics()["deepest_pair_fraction"])
+            statistics = rm.statistics()
+            self.deepest = max(self.deepest, statistics["deepest_pair_fraction"])
+            for name in self.window_sums:
+                self.window_sums[name] += statistics[name]
         if clock is None and done in self.window_ends:
             clock = clocks()
         if done == 1:  # the bodies have not moved yet: a contact now is an overlap in the start
@@ -421,7 +437,7 @@ class Recorder:
         row = [done, O.time, "shaking" if done <= self.args.shaking_steps else "settling", self.box_z(),
                positions[:, 2].mean(), positions[:, 2].max(), speeds.mean(), present,
                outside(positions, self.box_z()), *self.counts(), self.deepest_in_window(), steps,
-               *(clock - self.window_start_clock - self.excluded) / steps * 1e3]
+               *(clock - self.window_start_clock - self.excluded) / steps * 1e3, *self.window_means(steps)]
         self.rows.append(row)
         self.writer.writerow(row)
         self.file.flush()  # a run stopped early leaves every window so far
@@ -429,12 +445,21 @@ class Recorder:
         if len(self.rows) % 10 == 0 or done == self.args.steps:
             print(f"  t = {row[1]:.3f} s: box at {row[3] * 1e3:+.2f} mm, mean height {row[4]:.4f} m, max "
                   f"{row[5]:.4f} m, mean speed {row[6]:.3g} m/s, {row[10]} touching pairs, {row[12]} contacts, "
-                  f"{row[-2]:.2f} ms/step ({row[-1]:.2f} CPU)", flush=True)
+                  f"{row[FIELDS.index('ms_per_step')]:.2f} ms/step ({row[FIELDS.index('cpu_ms_per_step')]:.2f} CPU)",
+                  flush=True)
         if not (np.isfinite(positions).all() and np.isfinite(speeds).all()):
             self.fail(f"non-finite positions or speeds at t = {row[1]:.4f} s")
         elif row[8] or row[7] != self.args.count:
             self.fail(f"at t = {row[1]:.4f} s, {row[8]} bodies have left the box and {row[7]} of "
                       f"{self.args.count} are in the scene")
+
+    def window_means(self, steps):
+        """The window's means of roundedmesh's pairs stage (wall ms) and, with --timing stages, of its stages inside
+        (empty without, and for YADE's peers)."""
+        sums, self.window_sums = self.window_sums, dict.fromkeys(self.window_sums, 0.0)
+        timed = self.run in SHAPES and self.args.timing == "stages"
+        return [sums["pairs_ms"] / steps if self.run in SHAPES else ""] + [
+            sums[name] / steps if timed else "" for name in TIMED_STAGES]
 
     def deepest_in_window(self):
         """The largest overlap of a pair for its size: for roundedmesh, over the window's steps, as the stop rule
@@ -574,6 +599,8 @@ def run_one(args, run):
     recorder.file.close()
     if recorder.rows:
         plot_run(os.path.join(folder, "height.png"), recorder.rows, args, run)
+        if run in SHAPES and args.timing == "stages":
+            plot_timeline(os.path.join(folder, "timeline.png"), recorder.rows, args, run)
     if recorder.failure:
         raise SystemExit(f"S1 {run} stopped: {recorder.failure} (windows so far in {folder}/height.csv)")
 
@@ -637,6 +664,39 @@ def plot_run(path, rows, args, run):
              title=f"S1, {args.count} bodies, {run}, dt = {args.dt:g} s")
     axes.grid(alpha=0.3)
     axes.legend()
+    figure.tight_layout()
+    figure.savefig(path, dpi=120)
+    plt.close(figure)
+
+
+def plot_timeline(path, rows, args, run):
+    """Where each window's wall time per step goes: roundedmesh's stages inside the pairs (CPU ms over the threads,
+    so that on a step that keeps every thread busy they stack up to the pairs stage's wall time), the rest of the
+    pairs stage (their loop, waits for the slowest thread), and everything outside it (YADE's engines, the states
+    read and the forces written, Python)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    column = {name: np.array([r[k] if r[k] != "" else np.nan for r in rows], dtype=float)
+              for k, name in enumerate(FIELDS) if name.startswith("window_") or name in ("time_s", "ms_per_step")}
+    t = column["time_s"]
+    stages = [("lists (near searches)", column["window_near_search_cpu_ms"]),
+              ("lists (scans of near lists)", column["window_lists_cpu_ms"] - column["window_near_search_cpu_ms"]),
+              ("narrow phase", column["window_narrow_phase_cpu_ms"]), ("law", column["window_law_cpu_ms"]),
+              ("core", column["window_core_cpu_ms"])]
+    stacked = [values / args.threads for _, values in stages]
+    inside = sum(stacked)
+    stacked.append(np.maximum(column["window_pairs_ms"] - inside, 0))
+    stacked.append(column["ms_per_step"] - column["window_pairs_ms"])
+    labels = [name for name, _ in stages] + ["pairs stage, rest", "outside the pairs stage"]
+    figure, axes = plt.subplots(figsize=(8, 4.5))
+    axes.stackplot(t, *stacked, labels=labels, alpha=0.85)
+    axes.plot(t, column["ms_per_step"], "k-", lw=0.8, label="wall ms per step")
+    axes.axvspan(0, min(SHAKING, t[-1]), color="0.5", alpha=0.08)
+    axes.set(xlabel="time [s]", ylabel=f"ms per step (CPU stages / {args.threads} threads)", xlim=(0, t[-1]),
+             title=f"S1, {args.count} bodies, {run}, {args.threads} thread(s): where a step's time goes")
+    axes.grid(alpha=0.3)
+    axes.legend(fontsize=8, loc="upper right")
     figure.tight_layout()
     figure.savefig(path, dpi=120)
     plt.close(figure)

@@ -157,20 +157,24 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
   }
 }
 
+bool touchablePair(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& rotation,
+                   const Matrix3r& absRotation, const Vector3r& translation, Real skin, Real depth) {
+  const Real reach = depth + skin;
+  // Filter 1 again, for this skin and depth (transformedBox with |R| formed once).
+  const AlignedBox3r& b = mesh2.tree().triangleBox(t);
+  const Vector3r centre = rotation * b.center() + translation;
+  const Vector3r half = (absRotation * (0.5 * b.sizes())).array() + reach;
+  if (!mesh1.tree().triangleBox(s).intersects(AlignedBox3r(centre - half, centre + half))) return false;
+  return canTouch(mesh1, s, mesh2, t, rotation, translation, skin, reach, true);
+}
+
 void touchableTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
                             const Vector3r& translation, Real skin, Real depth, const std::vector<TrianglePair>& near,
                             std::vector<TrianglePair>& pairs) {
   pairs.clear();
-  const Real reach = depth + skin;
   const Matrix3r absRotation = rotation.cwiseAbs();
-  for (const TrianglePair& st : near) {
-    // Filter 1 again, for this skin and depth (transformedBox with |R| formed once).
-    const AlignedBox3r& b = mesh2.tree().triangleBox(st[1]);
-    const Vector3r centre = rotation * b.center() + translation;
-    const Vector3r half = (absRotation * (0.5 * b.sizes())).array() + reach;
-    if (!mesh1.tree().triangleBox(st[0]).intersects(AlignedBox3r(centre - half, centre + half))) continue;
-    if (canTouch(mesh1, st[0], mesh2, st[1], rotation, translation, skin, reach, true)) pairs.push_back(st);
-  }
+  for (const TrianglePair& st : near)
+    if (touchablePair(mesh1, st[0], mesh2, st[1], rotation, absRotation, translation, skin, depth)) pairs.push_back(st);
 }
 
 }  // namespace roundedmesh

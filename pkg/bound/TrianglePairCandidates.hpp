@@ -38,9 +38,15 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
                        const Vector3r& translation, Real skin, Real depth, Real shallow,
                        std::vector<TrianglePair>& pairs);
 
-// From `near` (a list for a larger skin and depth, built at a pose within (its skin - skin) of this one).
+// From `near` (a list for a larger skin and depth, built at a pose within (its skin - skin) of this one), one pair at
+// a time: the reference of touchableTrianglePairsBatched (BatchedCandidates.hpp), which the engine uses.
 void touchableTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
                             const Vector3r& translation, Real skin, Real depth, const std::vector<TrianglePair>& near,
                             std::vector<TrianglePair>& pairs);
+
+// Whether triangle s of mesh 1 and t of mesh 2 pass filters 1-5 for this skin and depth: the test of one pair of
+// touchableTrianglePairs (`absRotation`: |rotation|, formed once per list).
+bool touchablePair(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& rotation,
+                   const Matrix3r& absRotation, const Vector3r& translation, Real skin, Real depth);
 
 }  // namespace roundedmesh

@@ -9,7 +9,6 @@
 namespace roundedmesh {
 namespace {
 
-
 AlignedBox3r ball(const Vector3r& centre, Real radius) {
   return AlignedBox3r(centre.array() - radius, centre.array() + radius);
 }

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 
-#include "pkg/bound/TrianglePairCandidates.hpp"
+#include "pkg/bound/BatchedCandidates.hpp"
+#include "pkg/common/StageClock.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -25,7 +26,7 @@ Real deepestPossible(const RoundedMesh& a, const RoundedMesh& b) {
 
 void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Quaternionr& rotation,
                       const Matrix3r& matrix, const Vector3r& translation, const ListSkins& skins, Real radius,
-                      Real shallow, Real full, CandidateList& list, ContactStatistics& statistics) {
+                      Real shallow, Real full, CandidateList& list, ContactStatistics& statistics, bool timed) {
   const Real bound = mesh2.sphereBoundRadius();
   auto needed = [&](Real skin) { return list.deepest > shallow ? full : 1.5 * list.deepest + 2 * skin; };
   Real skin = skins.candidatesMin * radius, depth = shallow;
@@ -46,7 +47,9 @@ void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const 
     list.nearTranslation = translation;
     list.nearSkin = skins.nearFactor * skin;
     list.nearDepth = depth + list.nearSkin;
+    StageClock clock(timed);
     nearTrianglePairs(mesh1, mesh2, matrix, translation, list.nearSkin, list.nearDepth, shallow, list.near);
+    statistics.cpu.nearSearch += clock.lap();
     ++statistics.nearRebuilds;
   }
   list.built = true;
@@ -55,8 +58,9 @@ void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const 
   list.age = 0;
   list.rotation = rotation;
   list.translation = translation;
-  touchableTrianglePairs(mesh1, mesh2, matrix, translation, skin, depth, list.near, list.pairs);
+  touchableTrianglePairsBatched(mesh1, mesh2, matrix, translation, skin, depth, list.near, list.pairs);
   ++statistics.candidateRebuilds;
+  statistics.nearPairsScanned += static_cast<long>(list.near.size());
 }
 
 }  // namespace roundedmesh

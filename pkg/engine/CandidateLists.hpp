@@ -20,10 +20,10 @@ namespace roundedmesh {
 Real deepestPossible(const RoundedMesh& a, const RoundedMesh& b);
 
 // Brings `list` up to date for body 2's pose in body 1's frame (x1 = matrix * x2 + translation, `rotation` the same
-// as a quaternion); `radius`: the pair's smaller volume-equivalent radius [m], the unit of `skins`. Rebuilds are
-// counted in `statistics`.
+// as a quaternion); `radius`: the pair's smaller volume-equivalent radius [m], the unit of `skins`. Rebuilds and the
+// near pairs they scan are counted in `statistics`, and with `timed` the near searches' CPU time.
 void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Quaternionr& rotation,
                       const Matrix3r& matrix, const Vector3r& translation, const ListSkins& skins, Real radius,
-                      Real shallow, Real full, CandidateList& list, ContactStatistics& statistics);
+                      Real shallow, Real full, CandidateList& list, ContactStatistics& statistics, bool timed);
 
 }  // namespace roundedmesh

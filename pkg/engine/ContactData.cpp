@@ -4,6 +4,15 @@
 
 namespace roundedmesh {
 
+PairStageTimes& PairStageTimes::operator+=(const PairStageTimes& other) {
+  lists += other.lists;
+  nearSearch += other.nearSearch;
+  narrowPhase += other.narrowPhase;
+  law += other.law;
+  core += other.core;
+  return *this;
+}
+
 ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& other) {
   bodyPairs += other.bodyPairs;
   touchingPairs += other.touchingPairs;
@@ -17,6 +26,8 @@ ContactStatistics& ContactStatistics::operator+=(const ContactStatistics& other)
   neighbourRebuilds += other.neighbourRebuilds;
   candidateRebuilds += other.candidateRebuilds;
   nearRebuilds += other.nearRebuilds;
+  nearPairsScanned += other.nearPairsScanned;
+  cpu += other.cpu;
   return *this;
 }
 

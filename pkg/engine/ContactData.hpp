@@ -19,6 +19,18 @@
 
 namespace roundedmesh {
 
+// CPU seconds of the stages inside the pairs, summed over the pairs (and so over threads), measured under
+// EngineOptions' timing = 'stages' (else 0).
+struct PairStageTimes {
+  Real lists = 0;        // candidate lists brought up to date (updateCandidates), near searches included
+  Real nearSearch = 0;   // of which the near lists searched in the triangle trees (nearTrianglePairs)
+  Real narrowPhase = 0;  // Ig2 over the candidates, or against a partner
+  Real law = 0;          // Law2, node forces and friction (pairLoad)
+  Real core = 0;         // the deep-overlap core (corePair)
+
+  PairStageTimes& operator+=(const PairStageTimes& other);
+};
+
 // The funnel of one step, from body pairs down to triangle contacts, with the rejections of each test of
 // the narrow phase in the order they run (Appendix B): facing check (Eq. B.5), sphere overlap (Eq. 10),
 // projected circumcircle against the contact circle, empty polygon S, contact circle against S (h < a).
@@ -35,6 +47,8 @@ struct ContactStatistics {
   int neighbourRebuilds = 0;   // rebuilds of the broad phase's neighbour list
   int candidateRebuilds = 0;   // triangle-pair candidate lists rebuilt (from their pair's near list)
   int nearRebuilds = 0;        // near lists rebuilt from the triangle trees
+  long nearPairsScanned = 0;   // triangle pairs of the near lists scanned at the candidate lists' rebuilds
+  PairStageTimes cpu;          // under timing = 'stages'
 
   ContactStatistics& operator+=(const ContactStatistics& other);
   int contacts() const { return quadratureContacts + directContacts + exactContacts + sphereContacts; }
@@ -79,8 +93,6 @@ struct PairSummary {
                                        // the bodies overlap; the deepest triangle contact can run through both at a
                                        // slant, longer than that (doc/physics.md, "Which triangle pairs touch")
   int triangleContacts = 0;
-  Real coreDepth = 0;                  // the deepest overlap of two core spheres, or of a core sphere and the partner
-                                       // (CorePair.hpp) [m]: 0 while the pair is within the Hertz range
   bool sliding = false;                // the pair's spring slides, or (viscous law) any triangle contact (Eq. 21)
   Real elasticEnergy = 0;              // sum of the triangle contacts' elastic energies (NormalLoad), and the
                                        // energy of the pair's tangential spring [J]

@@ -4,6 +4,7 @@
 
 #include <omp.h>
 
+#include "pkg/common/StageClock.hpp"
 #include "pkg/engine/BroadPhase.hpp"
 #include "pkg/engine/CorePair.hpp"
 #include "pkg/engine/PairGeometry.hpp"
@@ -128,15 +129,17 @@ PairResult resolvePair(const ContactModel& model, const ContactData& data, const
   if (pair.body >= static_cast<int>(model.bodies.size())) return resolveSpherePair(model, data, pair, spring);
   ContactStatistics statistics;
   pairGeometry(model, data, pair, scratch, statistics, candidates);
+  StageClock clock(model.options.timing == Timing::Stages);
   PairResult result = pairLoad(model, data, pair, scratch, contacts, spring);
-  result.statistics += statistics;
+  statistics.cpu.law += clock.lap();
   const CoreLoad core = corePair(model, data, pair, result.summary);
+  statistics.cpu.core += clock.lap();
+  result.statistics += statistics;
   if (core.contacts > 0) {
     result.onBody.force += core.force;
     result.onBody.torque += core.torque;
     result.onOther = reaction(result.onBody, data.state(pair.body).position, data.state(pair.other).position);
     result.summary.elasticEnergy += core.energy;
-    result.summary.coreDepth = core.deepest;
     result.statistics.coreContacts += core.contacts;
   }
   return result;

@@ -14,7 +14,6 @@
 namespace roundedmesh {
 namespace {
 
-
 // What the limit of a pair depends on, for one side: mass [kg] (0: does not move under forces), radius of
 // the sphere standing for it [m] (infinite for a flat partner), its rotational compliance at the worst contact
 // point [1/kg] (0: rotation left out), material.

@@ -34,6 +34,8 @@ const std::vector<EngineOptionField> kFields = {
     {"core_inset", "how far below the surface each sphere of a body's core lies, as a fraction of its inscribed radius: "
                    "the cores push where a pair overlaps past the Hertz range of its own radii; 1: no core", {}},
     {"threads", "OpenMP threads of a step; 0: as YADE, OMP_NUM_THREADS where set (yade -jN), else one", {}},
+    {"timing", "'off', or 'stages': rm.statistics() also gives the CPU time of each stage inside the pairs (lists, "
+               "near searches, narrow phase, law, core), for a few clock readings per pair", {"off", "stages"}},
 };
 
 const EngineOptionField& field(const std::string& name) {
@@ -47,6 +49,7 @@ size_t choiceIndex(const EngineOptions& o, const std::string& name) {
   if (name == "friction") return static_cast<size_t>(o.friction);
   if (name == "curvature") return static_cast<size_t>(o.pressure.curvature);
   if (name == "normal") return static_cast<size_t>(o.pressure.normal);
+  if (name == "timing") return static_cast<size_t>(o.timing);
   throw std::invalid_argument("engine option '" + name + "' is a number, not a choice");
 }
 
@@ -96,7 +99,7 @@ int EngineOptions::resolvedThreads() const {
 bool EngineOptions::operator==(const EngineOptions& o) const {
   return pressure.gamma == o.pressure.gamma && pressure.regime == o.pressure.regime &&
          pressure.curvature == o.pressure.curvature && pressure.normal == o.pressure.normal && friction == o.friction &&
-         stopOverlap == o.stopOverlap && coreInset == o.coreInset && threads == o.threads;
+         stopOverlap == o.stopOverlap && coreInset == o.coreInset && threads == o.threads && timing == o.timing;
 }
 
 std::string choiceName(const EngineOptions& options, const std::string& name) {
@@ -113,6 +116,7 @@ void setChoice(EngineOptions& options, const std::string& name, const std::strin
       if (name == "friction") options.friction = static_cast<FrictionLaw>(k);
       if (name == "curvature") options.pressure.curvature = static_cast<CurvatureModel>(k);
       if (name == "normal") options.pressure.normal = static_cast<NormalLaw>(k);
+      if (name == "timing") options.timing = static_cast<Timing>(k);
       return;
     }
     known += std::string(k == 0 ? "" : k + 1 == f.choices.size() ? " or " : ", ") + "'" + f.choices[k] + "'";

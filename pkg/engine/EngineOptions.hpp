@@ -24,6 +24,10 @@ constexpr Real kStopOverlap = 0.5;
 // the Hertz range of those radii; 1: no core.
 constexpr Real kCoreInset = 0.25;
 
+// What a step measures of its own cost besides the wall time of its stages (ContactData's StageTimes): `Stages` also
+// the CPU time inside the pairs, stage by stage (PairStageTimes), at about 24 ns per clock reading, a few per pair.
+enum class Timing { Off, Stages };
+
 struct EngineOptions {
   PressureOptions pressure;                     // gamma, regime, curvature, normal
   FrictionLaw friction = FrictionLaw::Spring;   // the tangential law of every pair (doc/physics.md, "Friction")
@@ -31,6 +35,7 @@ struct EngineOptions {
   Real coreInset = kCoreInset;                  // the deep-overlap term's onset (CoreRepulsion.hpp); 1: none
   // OpenMP threads of a step; 0: YADE's convention, OMP_NUM_THREADS where set (yade -jN sets it), else one.
   int threads = 0;
+  Timing timing = Timing::Off;
 
   // Throws std::invalid_argument naming the option (as users write it) and the rule it breaks.
   void validate() const;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "pkg/common/Overloaded.hpp"
+#include "pkg/common/StageClock.hpp"
 #include "pkg/engine/CandidateLists.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Box_PressureGeom.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
@@ -34,6 +35,8 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
   auto inBody = [&](const Vector3r& x) -> Vector3r { return R_BW * (x - s1.position); };
   const GeomOutput out(geoms, &statistics.narrowPhase);
   const CurvatureModel curvature = model.options.pressure.curvature;
+  const bool timed = model.options.timing == Timing::Stages;
+  StageClock clock(timed);
   const int bodyCount = static_cast<int>(model.bodies.size());
   if (pair.other < bodyCount) {
     const BodyState& s2 = data.bodyStates[pair.other];
@@ -55,11 +58,13 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
     };
     for (int pass = 0;; ++pass) {
       updateCandidates(*body.mesh, *other.mesh, rotation, matrix, translation, model.skins, smaller, shallow,
-                       list.deepest > shallow ? fullDepth() : shallow, list, statistics);
+                       list.deepest > shallow ? fullDepth() : shallow, list, statistics, timed);
+      statistics.cpu.lists += clock.lap();
       NarrowPhaseCounts counts;
       geoms.clear();
       Ig2_RoundedMesh_RoundedMesh_PressureGeom(*body.mesh, *other.mesh, matrix, translation, list.pairs, shallow,
                                                motion, GeomOutput(geoms, &counts), curvature);
+      statistics.cpu.narrowPhase += clock.lap();
       list.deepest = 0;
       for (const PressureGeom& geom : geoms) list.deepest = std::max(list.deepest, geom.effectiveOverlap);
       const bool complete =
@@ -94,6 +99,7 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
                                         curvature);
                         }},
              partner.shape);
+  statistics.cpu.narrowPhase += clock.lap();
 }
 
 }  // namespace

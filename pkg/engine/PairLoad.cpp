@@ -64,10 +64,6 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   const BodyState& s2 = otherIsBody ? data.bodyStates[pair.other] : data.partnerStates[pair.other - bodyCount];
   const HertzMaterial& otherMaterial =
       otherIsBody ? model.bodies[pair.other].material : model.partners[pair.other - bodyCount].material;
-  const Matrix3r R_WB = s1.orientation.toRotationMatrix();
-  const PairLaw law(body.material, otherMaterial, model.options.pressure, model.options.friction);
-  const HertzPhys& phys = law.phys;
-  const RoundedMesh& mesh = *body.mesh;
   PairResult result;
   PairSummary& summary = result.summary;
   if (geoms.empty()) {
@@ -75,6 +71,10 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     result.onOther = reaction(result.onBody, s1.position, s2.position);
     return result;
   }
+  const Matrix3r R_WB = s1.orientation.toRotationMatrix();
+  const PairLaw law(body.material, otherMaterial, model.options.pressure, model.options.friction);
+  const HertzPhys& phys = law.phys;
+  const RoundedMesh& mesh = *body.mesh;
   Wrench onBody_B;
   // Sums of Fn times the point of application and along the normal, and of the unweighted ones for a pair
   // whose normal forces are all zero; the pair's normal stiffness.

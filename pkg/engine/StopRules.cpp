@@ -9,7 +9,6 @@
 namespace roundedmesh {
 namespace {
 
-
 bool isFlat(const PartnerShape& shape) { return !std::holds_alternative<Sphere>(shape); }
 
 // Where a point x is against a flat partner in `state` [m]: its signed distance from a Wall's plane (along the Wall's

@@ -11,10 +11,9 @@
 // energy rises along every approach of two of its spheres, and a body cannot pass through another without pushing its
 // core through the other's, nor through a sheet without its centre reaching it (StopRules.hpp stops a run there).
 // Input: E* [Pa]; the core sphere's centre relative to its body's position (global frame) [m]; delta [m]; R [m].
-// Output: the wrench on the body (global; torque about its position), the energy [J], the deepest delta [m].
+// Output: the wrench on the body (global; torque about its position), the energy [J].
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 
 #include "pkg/common/Types.hpp"
@@ -25,7 +24,6 @@ struct CoreLoad {
   Vector3r force = Vector3r::Zero();   // on the body [N]
   Vector3r torque = Vector3r::Zero();  // about the body's position [N m]
   Real energy = 0;                     // [J]
-  Real deepest = 0;                    // the largest delta [m]
   int contacts = 0;                    // touching pairs of core spheres (or core sphere and partner)
 
   // A core sphere of the body at `arm` from the body's position pushed along the unit `normal` (toward the body) by an
@@ -36,7 +34,6 @@ struct CoreLoad {
     force += f;
     torque += arm.cross(f);
     energy += Real(8) / 15 * stiffness * delta * delta;
-    deepest = std::max(deepest, delta);
     ++contacts;
   }
 };

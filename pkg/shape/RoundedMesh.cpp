@@ -81,6 +81,7 @@ RoundedMesh::RoundedMesh(std::vector<Vector3r> vertices, std::vector<Triangle> t
                                                                r.circumcentre.norm() + r.circumradius));
   }
   tree_ = TriangleTree(std::move(boxes));
+  columns_ = triangleColumns(*this);
   if (principal_.empty())
     for (const RoundedTriangle& r : rounded_) principal_.push_back(PrincipalCurvature::isotropic(1 / r.radius, r.normal));
 }

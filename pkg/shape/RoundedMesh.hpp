@@ -19,6 +19,7 @@
 #include "pkg/shape/InscribedSpheres.hpp"
 #include "pkg/shape/PrincipalCurvature.hpp"
 #include "pkg/shape/SolidDistance.hpp"
+#include "pkg/shape/TriangleColumns.hpp"
 
 namespace roundedmesh {
 
@@ -53,6 +54,8 @@ class RoundedMesh {
   Real sphereBoundRadius() const { return sphereBoundRadius_; }
   // The hierarchy of the triangles' cap boxes (TriangleTree.hpp), body frame.
   const TriangleTree& tree() const { return tree_; }
+  // The triangles' data the candidate lists test, as columns (TriangleColumns.hpp).
+  const TriangleColumns& columns() const { return columns_; }
   // The tallest cap: no point of the rounded surface lies farther than this outside the flat mesh's solid [m].
   Real maxCapHeight() const { return maxCapHeight_; }
   // The distance from the flat mesh's solid (SolidDistance.hpp), built on first use (thread-safe): grid spacing
@@ -72,6 +75,7 @@ class RoundedMesh {
   Real sphereBoundRadius_ = 0;
   Real maxCapHeight_ = 0;
   TriangleTree tree_;
+  TriangleColumns columns_;
   struct Lazy {
     std::once_flag distanceBuilt, spheresBuilt;
     std::unique_ptr<const SolidDistance> distance;

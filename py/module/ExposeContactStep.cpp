@@ -197,9 +197,15 @@ class SceneContacts {
     s["neighbour_rebuilds"] = c.neighbourRebuilds;
     s["candidate_rebuilds"] = c.candidateRebuilds;
     s["near_rebuilds"] = c.nearRebuilds;
+    s["near_pairs_scanned"] = c.nearPairsScanned;
     s["broad_phase_ms"] = 1e3 * data_.times.broadPhase;
     s["pairs_ms"] = 1e3 * data_.times.pairs;
     s["reduction_ms"] = 1e3 * data_.times.reduction;
+    s["lists_cpu_ms"] = 1e3 * c.cpu.lists;
+    s["near_search_cpu_ms"] = 1e3 * c.cpu.nearSearch;
+    s["narrow_phase_cpu_ms"] = 1e3 * c.cpu.narrowPhase;
+    s["law_cpu_ms"] = 1e3 * c.cpu.law;
+    s["core_cpu_ms"] = 1e3 * c.cpu.core;
     s["read_ms"] = readMs_;
     s["write_ms"] = writeMs_;
     s["deepest_pair_overlap"] = deepest_.overlap;

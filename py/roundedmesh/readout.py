@@ -33,7 +33,8 @@ _STATISTICS = ("body_pairs", "touching_pairs", "candidates", "rejected_not_facin
                "rejected_outside_circle", "rejected_empty_polygon", "rejected_beyond_contact_circle",
                "rejected_through_body",
                "quadrature_contacts", "direct_contacts", "exact_contacts", "sphere_contacts", "core_contacts", "sliding_contacts", "neighbour_rebuilds",
-               "candidate_rebuilds", "near_rebuilds", "broad_phase_ms", "pairs_ms", "reduction_ms", "read_ms",
+               "candidate_rebuilds", "near_rebuilds", "near_pairs_scanned", "broad_phase_ms", "pairs_ms", "reduction_ms",
+               "lists_cpu_ms", "near_search_cpu_ms", "narrow_phase_cpu_ms", "law_cpu_ms", "core_cpu_ms", "read_ms",
                "write_ms", "deepest_pair_overlap", "deepest_pair_fraction", "threads")
 
 
@@ -60,7 +61,12 @@ def statistics():
       neighbour_rebuilds       whether the broad phase's neighbour list was rebuilt (0 or 1)
       candidate_rebuilds       pairs whose candidate triangle pairs were rebuilt (from their near list)
       near_rebuilds            pairs whose near list was searched again in the triangle trees
+      near_pairs_scanned       triangle pairs of the near lists scanned to rebuild the candidate lists
       broad_phase_ms, pairs_ms, reduction_ms   wall time of each stage of the C++ step
+      lists_cpu_ms, near_search_cpu_ms, narrow_phase_cpu_ms, law_cpu_ms, core_cpu_ms   with rm.engine(timing='stages')
+                               (else 0): CPU time inside the pairs stage, summed over its threads: the candidate
+                               lists brought up to date (the near searches in the triangle trees included, and also
+                               given alone), the narrow phase (Ig2), the law with node forces and friction, the core
       read_ms, write_ms        wall time of reading the states from YADE (and the scene's springs, when it did not
                                write them itself) and of adding the forces (and writing the springs) to it
       deepest_pair_overlap     the overlap [m] of the pair that overlaps most for its size (contacts()['depth'])

@@ -32,7 +32,8 @@ _WARNED_PAIRS = 10
 def engine(label="", options=None, **named):
     """The engine to put in O.engines between ForceResetter and NewtonIntegrator. Its options: `options=` an
     rm.EngineOptions, or its fields by name (rm.engine(regime='exact')), every one left out at its default;
-    help(rm.EngineOptions) lists them (gamma, regime, friction, stop_overlap, curvature, normal, core_inset, threads) with their
+    help(rm.EngineOptions) lists them (gamma, regime, friction, stop_overlap, curvature, normal, core_inset, threads,
+    timing) with their
     meanings and allowed values. The options are kept in the scene (O.tags), so that O.save keeps them and
     rm.critical_timestep uses them. A body whose centre passes through a Wall, Facet or Box it was near in the step before stops the run too
     (doc/user-guide.md, "Choosing the time step")."""

@@ -58,8 +58,12 @@ from .benchmarking import machine, step_times_ms
 STATE_COLUMNS = ["x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz"]
 ENGINES = ["ForceResetter", "InsertionSortCollider", "InteractionLoop", "roundedmesh PyRunner", "NewtonIntegrator"]
 # rm.statistics()'s stage times: states read from YADE, broad phase, pairs (lists, narrow phase, law), sums,
-# forces written to YADE.
-ROUNDEDMESH_STAGES = ["read_ms", "broad_phase_ms", "pairs_ms", "reduction_ms", "write_ms"]
+# forces written to YADE; inside the pairs, with timing='stages', the CPU time of the lists (near searches
+# included, and given alone), the narrow phase, the law and the core.
+ROUNDEDMESH_STAGES = ["read_ms", "broad_phase_ms", "pairs_ms", "reduction_ms", "write_ms", "lists_cpu_ms",
+                      "near_search_cpu_ms", "narrow_phase_cpu_ms", "law_cpu_ms", "core_cpu_ms"]
+# What those stages work through per step.
+ROUNDEDMESH_COUNTS = ["body_pairs", "touching_pairs", "near_pairs_scanned", "candidates", "contacts"]
 DATA = os.path.join("bench", "data")  # the settled packings, relative to the repository's root
 
 
@@ -132,14 +136,26 @@ def engine_split(steps):
     split["YADE loop, rest"] = wall * 1e3 / steps - sum(split.values())
     split["whole step (timed block)"] = wall * 1e3 / steps
     if rm.rounded_bodies():
-        stages = dict.fromkeys(ROUNDEDMESH_STAGES, 0.0)
+        stages = dict.fromkeys(ROUNDEDMESH_STAGES + ROUNDEDMESH_COUNTS, 0.0)
+        runner = next(e for e in O.engines if type(e).__name__ == "PyRunner")
+        untimed = runner.command
+        runner.command = rm.engine(**{**options_of_scene(), "timing": "stages"}).command
         for _ in range(steps):
             O.step()
             statistics = rm.statistics()
+            statistics["contacts"] = sum(statistics[k] for k in ("quadrature_contacts", "direct_contacts",
+                                                                 "exact_contacts"))
             for stage in stages:
                 stages[stage] += statistics[stage] / steps
+        runner.command = untimed
         split.update({f"  roundedmesh {stage}": value for stage, value in stages.items()})
     return split
+
+
+def options_of_scene():
+    """The options of the scene's roundedmesh engine, by name."""
+    from roundedmesh._records import _engine_options
+    return _engine_options().record()
 
 
 def measure(name, build, args):
@@ -257,8 +273,8 @@ def main(argv):
         print(f"{r['representation']:44} {r['median_wall_ms']:13.3f} {r['median_cpu_ms']:12.3f} "
               f"{r['real_interactions']:12d} {r['touching_body_pairs']:11d} {r['body_wall_pairs']:10d}")
     parts = ENGINES + ["YADE loop, rest", "whole step (timed block)"] + [f"  roundedmesh {stage}" for stage in
-                                                                        ROUNDEDMESH_STAGES]
-    print("\nsplit of one timed block [ms/step] (O.timingEnabled)")
+                                                                        ROUNDEDMESH_STAGES + ROUNDEDMESH_COUNTS]
+    print("\nsplit of one timed block [ms/step] (O.timingEnabled; the roundedmesh counts per step)")
     print(f"{'':32}" + "".join(f"{r['key']:>12}" for r in results))
     for part in parts:
         print(f"{part:32}" + "".join(f"{r['split'].get(part, math.nan):12.3f}" for r in results))

@@ -26,7 +26,7 @@ std::string messageOf(const EngineOptions& options) {
 TEST(EngineOptions, TheTableNamesEveryOptionOnceWithItsDefault) {
   std::string names;
   for (const EngineOptionField& f : engineOptionFields()) names += std::string(names.empty() ? "" : " ") + f.name;
-  EXPECT_EQ(names, "gamma regime friction stop_overlap curvature normal core_inset threads");
+  EXPECT_EQ(names, "gamma regime friction stop_overlap curvature normal core_inset threads timing");
   const EngineOptions defaults;
   EXPECT_EQ(numberValue(defaults, "gamma"), 10);  // the paper's
   EXPECT_EQ(choiceName(defaults, "regime"), "auto");
@@ -36,6 +36,7 @@ TEST(EngineOptions, TheTableNamesEveryOptionOnceWithItsDefault) {
   EXPECT_EQ(choiceName(defaults, "normal"), "pressure");
   EXPECT_EQ(numberValue(defaults, "core_inset"), kCoreInset);
   EXPECT_EQ(numberValue(defaults, "threads"), 0);
+  EXPECT_EQ(choiceName(defaults, "timing"), "off");
   EXPECT_EQ(messageOf(defaults), "");
 }
 
@@ -44,6 +45,8 @@ TEST(EngineOptions, ChoicesSetTheirEnumsByName) {
   setChoice(o, "regime", "exact");
   setChoice(o, "friction", "viscous");
   setChoice(o, "curvature", "principal");
+  setChoice(o, "timing", "stages");
+  EXPECT_EQ(o.timing, Timing::Stages);
   EXPECT_EQ(o.pressure.regime, RegimeChoice::Exact);
   EXPECT_EQ(o.friction, FrictionLaw::Viscous);
   EXPECT_EQ(o.pressure.curvature, CurvatureModel::Principal);

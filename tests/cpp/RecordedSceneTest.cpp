@@ -9,6 +9,7 @@
 #include <set>
 
 #include "bench/RecordedScene.hpp"
+#include "pkg/bound/BatchedCandidates.hpp"
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/PairLoad.hpp"
 #include "pkg/engine/ContactStep.hpp"
@@ -98,6 +99,65 @@ TEST(RecordedScene, SameResultOnAnyNumberOfThreads) {
     EXPECT_EQ(runs[0].bodyWrenches[b].force, runs[1].bodyWrenches[b].force);
     EXPECT_EQ(runs[0].bodyWrenches[b].torque, runs[1].bodyWrenches[b].torque);
   }
+}
+
+// The engine's candidate lists, taken from the near lists in batches, are the reference's pair for pair: every list
+// of the first 20 steps of shaking, at the pose and for the skin and depth it was built with.
+TEST(RecordedScene, BatchedListsAreTheReferenceLists) {
+  const ContactModel& model = scene().model;
+  ContactData data;
+  long lists = 0, candidates = 0;
+  for (int step = 0; step < 20; ++step) {
+    scene().setStates(data, scene().shaking, step);
+    contactForces(model, data);
+    for (size_t n = 0; n < data.neighbours.size(); ++n) {
+      const CandidateList& list = data.candidateLists[n];
+      const BodyPair& pair = data.neighbours[n];
+      if (!list.built || list.age != 0 || pair.other >= static_cast<int>(model.bodies.size())) continue;
+      const RoundedMesh &mesh1 = *model.bodies[pair.body].mesh, &mesh2 = *model.bodies[pair.other].mesh;
+      const Matrix3r rotation = list.rotation.toRotationMatrix();
+      std::vector<TrianglePair> reference;
+      touchableTrianglePairs(mesh1, mesh2, rotation, list.translation, list.skin, list.depth, list.near, reference);
+      ASSERT_EQ(list.pairs, reference) << "step " << step << ", pair " << pair.body << "-" << pair.other;
+      ++lists;
+      candidates += static_cast<long>(reference.size());
+    }
+  }
+  EXPECT_GT(lists, 5000);  // about 450 rebuilt per step
+  EXPECT_GT(candidates, 100000);
+}
+
+// timing = 'stages' measures the stages inside the pairs and changes nothing else. On one thread the stages lie
+// inside the pairs stage, read by another clock: their sum stays below its wall time, up to 50 microseconds of the
+// two clocks' disagreement and the pair loop's own work.
+TEST(RecordedScene, TimingTheStagesChangesNothing) {
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  ContactModel timed = scene().model;
+  timed.options.timing = Timing::Stages;
+  ContactData plain, measured;
+  for (int step = 0; step < 10; ++step) {
+    scene().setStates(plain, scene().shaking, step);
+    scene().setStates(measured, scene().shaking, step);
+    contactForces(scene().model, plain);
+    contactForces(timed, measured);
+    const PairStageTimes& none = plain.statistics.cpu;
+    EXPECT_EQ(none.lists + none.nearSearch + none.narrowPhase + none.law + none.core, 0);
+    const PairStageTimes& cpu = measured.statistics.cpu;
+    EXPECT_GT(cpu.narrowPhase, 0);
+    EXPECT_GT(cpu.law, 0);
+    EXPECT_GE(cpu.lists, cpu.nearSearch);
+    EXPECT_LE(cpu.lists + cpu.narrowPhase + cpu.law + cpu.core, measured.times.pairs + 50e-6) << step;
+    EXPECT_EQ(plain.statistics.nearPairsScanned, measured.statistics.nearPairsScanned);
+    EXPECT_EQ(plain.statistics.contacts(), measured.statistics.contacts());
+    for (size_t b = 0; b < plain.bodyWrenches.size(); ++b) {
+      EXPECT_EQ(plain.bodyWrenches[b].force, measured.bodyWrenches[b].force);
+      EXPECT_EQ(plain.bodyWrenches[b].torque, measured.bodyWrenches[b].torque);
+    }
+  }
+  omp_set_num_threads(threads);
+  EXPECT_GT(measured.statistics.nearPairsScanned, 0);  // the shaking rebuilds lists every step
+  EXPECT_GT(measured.statistics.cpu.lists, 0);
 }
 
 }  // namespace

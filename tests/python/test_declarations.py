@@ -29,10 +29,10 @@ def test_a_material_record_names_every_field_and_restores_it():
 def test_the_engine_options_and_their_defaults_come_from_core():
     assert _core.ENGINE_OPTIONS == {"gamma": 10.0, "regime": "auto", "friction": "spring",
                                     "stop_overlap": _core.STOP_OVERLAP, "curvature": "mean", "normal": "pressure",
-                                    "core_inset": 0.25, "threads": 0}
+                                    "core_inset": 0.25, "threads": 0, "timing": "off"}
     assert _core.ENGINE_CHOICES == {"regime": ("auto", "quadrature", "direct", "exact"),
                                     "friction": ("spring", "viscous"), "curvature": ("mean", "principal"),
-                                    "normal": ("pressure", "energy")}
+                                    "normal": ("pressure", "energy"), "timing": ("off", "stages")}
     assert rm.EngineOptions().record() == _core.ENGINE_OPTIONS
     assert rm.EngineOptions.fields == tuple(_core.ENGINE_OPTIONS)
     # The engine's command names its options' record in the scene, and carries none of them.

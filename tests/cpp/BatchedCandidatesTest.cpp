@@ -1,0 +1,86 @@
+// The batched candidate lists (BatchedCandidates.hpp) are the reference's (touchableTrianglePairs), pair for pair and
+// in the same order: for 10^5 random triangle pairs of every kind of the robustness suite (general, coplanar, edge on
+// edge), each filling whole vectors and a tail; for the near lists of random body pairs of the library (icospheres,
+// a distorted icosphere, a spheroid, 1 mm to 1 m), at the pose the near list was built at and moved within its skin;
+// and (RecordedSceneTest) for every list of S1's recorded shaking. No tolerance: the batched pass only rejects by a
+// margin, and every pair it keeps is decided by the reference's own test.
+#include <gtest/gtest.h>
+
+#include "pkg/bound/BatchedCandidates.hpp"
+#include "tests/support/RandomPairs.hpp"
+
+namespace roundedmesh {
+namespace {
+
+using Pairs = std::vector<TrianglePair>;
+
+// A rotation by up to `angle` [rad] about a random axis.
+Matrix3r randomTurn(test::RandomSource& random, Real angle) {
+  return Eigen::AngleAxis<Real>(random.uniform(0, angle), random.direction()).toRotationMatrix();
+}
+
+TEST(BatchedCandidates, RandomTrianglePairsGiveTheReferenceDecision) {
+  test::RandomSource random(20261127);
+  // More copies than the widest vector holds, and not a multiple of it: whole vectors and a tail.
+  const Pairs near(2 * 8 + 3, TrianglePair{0, 0});
+  long kept = 0, rejected = 0;
+  for (long trial = 0; trial < 100000; ++trial) {
+    const test::TrianglePair pair = test::randomTrianglePair(random, test::pairKind(trial));
+    // Body 2 as given, or turned about body 1's origin by up to 0.1 rad and moved by up to a tenth of the size.
+    Matrix3r rotation = Matrix3r::Identity();
+    Vector3r translation = Vector3r::Zero();
+    if (trial % 2) {
+      rotation = randomTurn(random, 0.1);
+      translation = random.uniform(0, 0.1) * pair.size * random.direction();
+    }
+    const Real skin = pair.size * std::exp(random.uniform(std::log(1e-5), std::log(0.1)));
+    const Real depth = pair.size * random.uniform(0, 0.1);
+    Pairs reference, batched;
+    touchableTrianglePairs(pair.p, pair.q, rotation, translation, skin, depth, near, reference);
+    touchableTrianglePairsBatched(pair.p, pair.q, rotation, translation, skin, depth, near, batched);
+    ASSERT_EQ(batched, reference) << "trial " << trial;
+    (reference.empty() ? rejected : kept) += 1;
+  }
+  // Both outcomes are common, so a pass that rejected or kept too much would show.
+  EXPECT_GT(kept, 10000);
+  EXPECT_GT(rejected, 10000);
+}
+
+TEST(BatchedCandidates, RandomBodyPairsGiveTheReferenceLists) {
+  test::RandomSource random(38);
+  test::BodyLibrary library(HertzMaterial{1e6, 0.4, 2000, 1e-3, 0.5, 20});
+  long scanned = 0, candidates = 0;
+  int bodyPairs = 0;
+  while (scanned < 100000) {
+    ASSERT_LT(++bodyPairs, 5000) << "too few near pairs";
+    const test::BodyPairCase c = test::randomBodyPair(random, library);
+    const RoundedMesh &mesh1 = *c.model.bodies[0].mesh, &mesh2 = *c.model.bodies[1].mesh;
+    const BodyState &s1 = c.data.bodyStates[0], &s2 = c.data.bodyStates[1];
+    const Real radius = std::min(c.model.bodies[0].equivalentRadius, c.model.bodies[1].equivalentRadius);
+    const Matrix3r rotation = (s1.orientation.conjugate() * s2.orientation).toRotationMatrix();
+    const Vector3r translation = s1.orientation.conjugate() * (s2.position - s1.position);
+    // The engine's skins (0.001 to 0.01 r_eq, the near list's five times larger) and depths (shallow, or twice).
+    const Real skin = radius * std::exp(random.uniform(std::log(1e-3), std::log(1e-2)));
+    const Real shallow = kDeepestOverlap * radius;
+    const Real depth = shallow * (bodyPairs % 3 == 0 ? 2 : random.uniform(0.01, 1));
+    Pairs near;
+    nearTrianglePairs(mesh1, mesh2, rotation, translation, 5 * skin, depth + 5 * skin, shallow, near);
+    // At the near list's pose, and with body 2 moved by up to 4 skins (turned about its centre and shifted).
+    const Matrix3r turn = randomTurn(random, 2 * skin / mesh2.sphereBoundRadius());
+    const Vector3r shift = random.uniform(0, 2) * skin * random.direction();
+    for (const auto& [r, x] : {std::pair<Matrix3r, Vector3r>(rotation, translation),
+                               std::pair<Matrix3r, Vector3r>(rotation * turn, translation + shift)}) {
+      Pairs reference, batched;
+      touchableTrianglePairs(mesh1, mesh2, r, x, skin, depth, near, reference);
+      touchableTrianglePairsBatched(mesh1, mesh2, r, x, skin, depth, near, batched);
+      ASSERT_EQ(batched, reference) << "body pair " << bodyPairs;
+      scanned += static_cast<long>(near.size());
+      candidates += static_cast<long>(reference.size());
+    }
+  }
+  EXPECT_GT(candidates, 1000);
+  EXPECT_LT(candidates, scanned);
+}
+
+}  // namespace
+}  // namespace roundedmesh
