@@ -38,8 +38,9 @@ namespace roundedmesh {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// Writes the indices (into the scan's pairs) of those not rejected to `kept`; returns how many. `kept` holds
-// count + Lanes entries (a compressed store writes whole vectors).
+// Writes the indices (into the scan's pairs) of those not rejected to `kept` (room for all); returns how many. A
+// compressed store may write a whole vector, lanes [keptCount, keptCount + lanes), which stays within the first
+// i + lanes <= count entries since keptCount <= i.
 size_t KeptNearPairs(const batched::NearScan& scan, int64_t* kept) {
   const hn::ScalableTag<double> d;
   const hn::RebindToSigned<decltype(d)> di;
@@ -169,7 +170,7 @@ void touchableTrianglePairsBatched(const RoundedMesh& mesh1, const RoundedMesh& 
   const size_t count = near.size();
   s.resize(count);
   t.resize(count);
-  kept.resize(count + HWY_MAX_BYTES / sizeof(double));
+  kept.resize(count);
   for (size_t k = 0; k < count; ++k) {
     s[k] = near[k][0];
     t[k] = near[k][1];

@@ -63,7 +63,8 @@ ENGINES = ["ForceResetter", "InsertionSortCollider", "InteractionLoop", "rounded
 ROUNDEDMESH_STAGES = ["read_ms", "broad_phase_ms", "pairs_ms", "reduction_ms", "write_ms", "lists_cpu_ms",
                       "near_search_cpu_ms", "narrow_phase_cpu_ms", "law_cpu_ms", "core_cpu_ms"]
 # What those stages work through per step.
-ROUNDEDMESH_COUNTS = ["body_pairs", "touching_pairs", "near_pairs_scanned", "candidates", "contacts"]
+ROUNDEDMESH_COUNTS = ["body_pairs", "touching_pairs", "near_rebuilds", "candidate_rebuilds", "near_pairs_scanned", "candidates",
+                      "contacts"]
 DATA = os.path.join("bench", "data")  # the settled packings, relative to the repository's root
 
 

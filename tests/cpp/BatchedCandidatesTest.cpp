@@ -51,7 +51,7 @@ TEST(BatchedCandidates, RandomBodyPairsGiveTheReferenceLists) {
   test::BodyLibrary library(HertzMaterial{1e6, 0.4, 2000, 1e-3, 0.5, 20});
   long scanned = 0, candidates = 0;
   int bodyPairs = 0;
-  while (scanned < 100000) {
+  while (scanned < 50000) {
     ASSERT_LT(++bodyPairs, 5000) << "too few near pairs";
     const test::BodyPairCase c = test::randomBodyPair(random, library);
     const RoundedMesh &mesh1 = *c.model.bodies[0].mesh, &mesh2 = *c.model.bodies[1].mesh;

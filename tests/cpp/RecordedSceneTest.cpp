@@ -136,7 +136,7 @@ TEST(RecordedScene, TimingTheStagesChangesNothing) {
   ContactModel timed = scene().model;
   timed.options.timing = Timing::Stages;
   ContactData plain, measured;
-  for (int step = 0; step < 10; ++step) {
+  for (int step = 0; step < 4; ++step) {
     scene().setStates(plain, scene().shaking, step);
     scene().setStates(measured, scene().shaking, step);
     contactForces(scene().model, plain);

@@ -84,6 +84,31 @@ def test_a_short_run_writes_every_output_and_keeps_the_bodies_in_the_box(tmp_pat
 
 # 1,600 steps of 5e-4 s (a quarter of this scene's stability limit) with one body: past the shaking's end,
 # with four frames spread over the run.
+# --timing stages: every window's stages inside the pairs, which stay within the pairs stage's wall time on one thread,
+# and the timeline figure; without it the stage columns are empty.
+def test_timed_stages_are_written_per_window_with_their_timeline(tmp_path):
+    out = run("--shape", "icosphere42", "--count", "16", "--duration", "0.1", "--sample", "250", "--frames", "1",
+              "--timing", "stages", "--output", str(tmp_path))
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert (tmp_path / "icosphere42" / "timeline.png").stat().st_size > 0
+    windows = rows(tmp_path / "icosphere42" / "height.csv")
+    assert len(windows) == 4
+    for r in windows:
+        stages = [float(r[f"window_{stage}"]) for stage in ("lists_cpu_ms", "narrow_phase_cpu_ms", "law_cpu_ms",
+                                                              "core_cpu_ms")]
+        assert all(value >= 0 for value in stages)
+        assert sum(stages) <= float(r["window_pairs_ms"]) + 0.05
+        assert float(r["window_pairs_ms"]) <= float(r["ms_per_step"])
+    # the rising floor meets the bodies within the second window
+    assert any(float(r["window_body_pairs"]) > 0 and float(r["window_narrow_phase_cpu_ms"]) > 0 for r in windows)
+    untimed = run("--shape", "icosphere42", "--count", "16", "--duration", "0.01", "--sample", "50", "--frames", "1",
+                  "--output", str(tmp_path / "untimed"))
+    assert untimed.returncode == 0, untimed.stdout + untimed.stderr
+    assert not (tmp_path / "untimed" / "icosphere42" / "timeline.png").exists()
+    assert all(r["window_lists_cpu_ms"] == "" and float(r["window_pairs_ms"]) >= 0
+               for r in rows(tmp_path / "untimed" / "icosphere42" / "height.csv"))
+
+
 def test_the_box_shakes_for_three_periods_then_stands_still(tmp_path):
     out = run("--shape", "icosphere12", "--count", "1", "--duration", "0.8", "--dt", "5e-4", "--sample", "10",
               "--frames", "4", "--output", str(tmp_path))
