@@ -155,6 +155,7 @@ RecordedScene loadRecordedScene(const std::string& folder) {
 
   scene.shaking = readTrajectory(folder + "/s1_shaking.bin", scene.bodyStates.size() + 1);
   scene.resting = readTrajectory(folder + "/s1_resting.bin", scene.bodyStates.size() + 1);
+  scene.landing = readTrajectory(folder + "/s1_landing.bin", scene.bodyStates.size() + 1);
   return scene;
 }
 

@@ -1,6 +1,7 @@
 // Scene S1 as scripts/benchmarks/record_s1_scene.py recorded it (bench/data): 250 gummy bears and the box's five YADE
-// Walls, with S1's materials, as a ContactModel; the settled packing's states; and two trajectories from it,
-// the first steps of shaking and as many steps in the standing box. Lets the benchmark and the tests run the
+// Walls, with S1's materials, as a ContactModel; the settled packing's states; two trajectories from it, the first
+// steps of shaking and as many steps in the standing box; and as many steps of a whole S1 run's landing window
+// (from t = 0.45 s, seed 1: the falling bears meeting the shaken pile). Lets the benchmark and the tests run the
 // complete contact step on a real packing, without YADE or Python.
 #pragma once
 
@@ -17,7 +18,7 @@ struct RecordedScene {
   std::vector<BodyState> partnerStates;  // the walls
   // trajectory[k]: every body's state at step k, then the floor's (partner 0).
   using Trajectory = std::vector<std::vector<BodyState>>;
-  Trajectory shaking, resting;
+  Trajectory shaking, resting, landing;
 
   // Puts the settled packing into data.
   void setStates(ContactData& data) const;

@@ -3,7 +3,8 @@
 //   BM_S1Step/threads/motion/skin/steps/near/friction/curvature   one contactForces step (stages 2-4 of ContactStep.hpp); motion = 0: the settled
 //                              packing again and again (the lists kept between steps stay valid), 1: the recorded
 //                              steps of shaking in order, forth and back (the lists are rebuilt as the bodies move),
-//                              2: the recorded steps of the packing resting in the standing box (it rattles);
+//                              2: the recorded steps of the packing resting in the standing box (it rattles),
+//                              3: the recorded steps of a whole run's landing window (t = 0.45 s on);
 //                              friction = 0: S1's frictionless materials, 1: mu = 0.5 and c = 10 N s/m on every
 //                              material with the tangential spring, 2: the same with the paper's viscous law;
 //                              curvature = 0: the paper's circle (mean curvature), 1: the ellipse of both principal
@@ -58,7 +59,10 @@ ContactModel withFriction(ContactModel model, long friction) {
 void s1Step(benchmark::State& state, bool core, bool stages) {
   const int threads = static_cast<int>(state.range(0));
   const int motion = static_cast<int>(state.range(1));
-  const RecordedScene::Trajectory* trajectory = motion == 1 ? &scene().shaking : motion == 2 ? &scene().resting : nullptr;
+  const RecordedScene::Trajectory* trajectory = motion == 1   ? &scene().shaking
+                                                : motion == 2 ? &scene().resting
+                                                : motion == 3 ? &scene().landing
+                                                              : nullptr;
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
   ContactModel model = withFriction(scene().model, state.range(5));
@@ -113,7 +117,7 @@ void s1Step(benchmark::State& state, bool core, bool stages) {
     state.counters["law_cpu_ms"] = benchmark::Counter(1e3 * total.cpu.law, perStep);
     state.counters["core_cpu_ms"] = benchmark::Counter(1e3 * total.cpu.core, perStep);
   }
-  state.SetLabel(std::string(motion == 1 ? "shaking" : motion == 2 ? "resting" : "settled") + ", " +
+  state.SetLabel(std::string(motion == 1 ? "shaking" : motion == 2 ? "resting" : motion == 3 ? "landing" : "settled") + ", " +
                  std::to_string(threads) + " thread(s)" +
                  (state.range(5) == 1 ? ", spring" : state.range(5) == 2 ? ", viscous" : "") +
                  (state.range(6) == 1 ? ", principal curvatures" : "") + (core ? "" : ", without the core") +
@@ -121,9 +125,9 @@ void s1Step(benchmark::State& state, bool core, bool stages) {
 }
 
 void BM_S1Step(benchmark::State& state) { s1Step(state, true, false); }
-BENCHMARK(BM_S1Step)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_S1Step)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2, 3}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // Where the time of a step goes, stage by stage.
-BENCHMARK_CAPTURE(s1Step, stages, true, true)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(s1Step, stages, true, true)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2, 3}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // What the deep-overlap core costs: the same steps without it.
 BENCHMARK_CAPTURE(s1Step, without_core, false, false)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // With friction: the spring and the viscous law.

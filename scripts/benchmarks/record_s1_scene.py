@@ -9,6 +9,9 @@
                                   every bear's and the floor's state at every step (float32, see below)
     bench/data/s1_resting.bin     the same number of steps of the settled packing in the standing box: the bears
                                   still rattle and spin (up to 3 rad/s), as they do in YADE after settling
+    bench/data/s1_landing.bin     with --landing: the same number of steps of a whole S1 run continued from its
+                                  checkpoint in the landing window (the falling bears meeting the shaken pile, the
+                                  costliest part of the run: doc/benchmarks.md, "Speed III"), written alone
 
 The settled packing comes from scripts/benchmarks/bench_shaken_bears.py, which lets the bears fall from S1's
 lattice into the standing box and saves the settled scene; this script loads it, writes the packing, then moves the
@@ -17,6 +20,11 @@ floor as S1 shakes the box, z = A sin(2 pi t / T) (A = 0.025 m, T = 0.25 s), and
     /usr/bin/python3 scripts/benchmarks/bench_shaken_bears.py --rebuild --settle-dt 5e-4 --settle-damping 0.3
     /usr/bin/python3 scripts/benchmarks/record_s1_scene.py [--settled out/bench_shaken_bears/settled.yade.gz]
                                                            [--steps 200]
+
+The landing window comes from a checkpoint of scripts/s1_packing.py (seed 1, the bears' run) at t = 0.45 s:
+
+    /usr/bin/python3 scripts/s1_packing.py --threads 2 --duration 0.4501 --checkpoint-every 500 --output out/s1_landing
+    /usr/bin/python3 scripts/benchmarks/record_s1_scene.py --landing out/s1_landing/gummy_bear/checkpoint.yade.gz
 
 A packing of a study grain (roundedmesh_study.grains.NAMES), settled by bench_shaken_bears.py --shape <name>, is
 written alone, as bench/data/s1_settled_<name>.csv (its 'shape' column the grain's name): the speed-against-error
@@ -122,19 +130,23 @@ def floor_id():
     return floors[0]
 
 
-def record(bears, steps, path, amplitude):
-    """Records `steps` steps from the saved scene, the box shaken with `amplitude` [m] (0: standing)."""
+def shake(amplitude):
+    """Moves the floor of the loaded scene as S1 shakes the box, with `amplitude` [m] (0: standing), from now on."""
     floor = floor_id()
-    ids = list(bears) + [floor]
     start = O.time
     omega = 2 * math.pi / PERIOD
 
     def drive():  # the box's velocity for the step about to be integrated
         O.bodies[floor].state.vel = (0, 0, amplitude * omega * math.cos(omega * (O.time - start + 0.5 * O.dt)))
 
-    frames = np.empty((steps, len(ids), 13), dtype="<f4")
     O.engines = O.engines[:-1] + [PyRunner(command="drive()", iterPeriod=1, initRun=True)] + O.engines[-1:]
     sys.modules["__main__"].drive = drive  # PyRunner commands run in __main__'s namespace
+
+
+def record(bears, steps, path):
+    """Records `steps` steps of the loaded scene as its engines run it."""
+    ids = list(bears) + [floor_id()]
+    frames = np.empty((steps, len(ids), 13), dtype="<f4")
     reporter = Progress(steps, os.path.basename(path))
     for k in range(steps):
         O.run(1, True)
@@ -147,16 +159,40 @@ def record(bears, steps, path, amplitude):
         f.write(frames.tobytes())
 
 
+def record_landing(checkpoint, steps, output):
+    """s1_landing.bin: `steps` steps of S1 continued from `checkpoint`, its box moved by its own
+    HarmonicMotionEngine; s1_packing.py's recorder and frames, which the checkpoint names, left out."""
+    if not os.path.exists(checkpoint):
+        raise SystemExit(f"{checkpoint} does not exist: run scripts/s1_packing.py with --checkpoint-every first")
+    main_module = sys.modules["__main__"]
+    main_module.s1_record = main_module.s1_last_step_ends = lambda *arguments: None
+    O.load(checkpoint)
+    for engine in O.engines:
+        if isinstance(engine, PyRunner) and "roundedmesh" not in engine.command:
+            engine.dead = True
+    bears = sorted(rm.rounded_bodies())
+    if len(bears) != 250:
+        raise SystemExit(f"{checkpoint}: {len(bears)} rounded bodies, not S1's 250 gummy bears")
+    print(f"{checkpoint}: t = {O.time:.4f} s, step {O.iter}")
+    record(bears, steps, os.path.join(output, "s1_landing.bin"))
+    print(f"wrote s1_landing.bin ({steps} steps from t = {O.time - steps * O.dt:.4f} s) to {output}")
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--settled", default="out/bench_shaken_bears/settled.yade.gz")
     parser.add_argument("--output", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir,
                                                          os.pardir, "bench", "data"))
     parser.add_argument("--steps", type=int, default=200, help="steps of each trajectory to record")
+    parser.add_argument("--landing", metavar="CHECKPOINT",
+                        help="record s1_landing.bin only, from this checkpoint of scripts/s1_packing.py")
     args = parser.parse_args(argv)
     command = " ".join(shlex.quote(a) for a in [sys.executable, sys.argv[0]] + list(argv))
     if args.steps < 1:
         parser.error("--steps must be positive")
+    if args.landing:
+        record_landing(args.landing, args.steps, args.output)
+        return
     if not os.path.exists(args.settled):
         raise SystemExit(f"{args.settled} does not exist: run scripts/benchmarks/bench_shaken_bears.py first")
     os.makedirs(args.output, exist_ok=True)
@@ -178,9 +214,11 @@ def main(argv):
         return
     write_mesh(meshes[bears[0]], os.path.join(args.output, "gummy_bear.mesh"))
     write_settled(bears, settled, shape, made_by)
-    record(bears, args.steps, os.path.join(args.output, "s1_shaking.bin"), AMPLITUDE)
+    shake(AMPLITUDE)
+    record(bears, args.steps, os.path.join(args.output, "s1_shaking.bin"))
     O.load(args.settled)
-    record(bears, args.steps, os.path.join(args.output, "s1_resting.bin"), 0.0)
+    shake(0.0)
+    record(bears, args.steps, os.path.join(args.output, "s1_resting.bin"))
     print(f"wrote gummy_bear.mesh, s1_settled.csv, s1_shaking.bin and s1_resting.bin ({args.steps} steps each) to "
           f"{args.output}")
 

@@ -102,29 +102,34 @@ TEST(RecordedScene, SameResultOnAnyNumberOfThreads) {
 }
 
 // The engine's candidate lists, taken from the near lists in batches, are the reference's pair for pair: every list
-// of the first 20 steps of shaking, at the pose and for the skin and depth it was built with.
+// of the first 12 recorded steps of shaking and 8 of the landing window (pairs past the Hertz range, whose lists are as
+// deep as the bodies), at the pose and for the skin and depth it was built with.
 TEST(RecordedScene, BatchedListsAreTheReferenceLists) {
   const ContactModel& model = scene().model;
-  ContactData data;
-  long lists = 0, candidates = 0;
-  for (int step = 0; step < 20; ++step) {
-    scene().setStates(data, scene().shaking, step);
-    contactForces(model, data);
-    for (size_t n = 0; n < data.neighbours.size(); ++n) {
-      const CandidateList& list = data.candidateLists[n];
-      const BodyPair& pair = data.neighbours[n];
-      if (!list.built || list.age != 0 || pair.other >= static_cast<int>(model.bodies.size())) continue;
-      const RoundedMesh &mesh1 = *model.bodies[pair.body].mesh, &mesh2 = *model.bodies[pair.other].mesh;
-      const Matrix3r rotation = list.rotation.toRotationMatrix();
-      std::vector<TrianglePair> reference;
-      touchableTrianglePairs(mesh1, mesh2, rotation, list.translation, list.skin, list.depth, list.near, reference);
-      ASSERT_EQ(list.pairs, reference) << "step " << step << ", pair " << pair.body << "-" << pair.other;
-      ++lists;
-      candidates += static_cast<long>(reference.size());
+  long lists = 0, candidates = 0, deepLists = 0;
+  for (const auto& [trajectory, steps] : {std::pair(&scene().shaking, 12), std::pair(&scene().landing, 8)}) {
+    ContactData data;
+    for (int step = 0; step < steps; ++step) {
+      scene().setStates(data, *trajectory, step);
+      contactForces(model, data);
+      for (size_t n = 0; n < data.neighbours.size(); ++n) {
+        const CandidateList& list = data.candidateLists[n];
+        const BodyPair& pair = data.neighbours[n];
+        if (!list.built || list.age != 0 || pair.other >= static_cast<int>(model.bodies.size())) continue;
+        const RoundedMesh &mesh1 = *model.bodies[pair.body].mesh, &mesh2 = *model.bodies[pair.other].mesh;
+        std::vector<TrianglePair> reference;
+        touchableTrianglePairs(mesh1, mesh2, list.rotation.toRotationMatrix(), list.translation, list.skin, list.depth,
+                               list.near, reference);
+        ASSERT_EQ(list.pairs, reference) << "step " << step << ", pair " << pair.body << "-" << pair.other;
+        ++lists;
+        candidates += static_cast<long>(reference.size());
+        if (list.deepest > kDeepestOverlap * model.bodies[pair.body].equivalentRadius) ++deepLists;
+      }
     }
   }
-  EXPECT_GT(lists, 5000);  // about 450 rebuilt per step
+  EXPECT_GT(lists, 5000);  // about 450 rebuilt per step shaking, more landing
   EXPECT_GT(candidates, 100000);
+  EXPECT_GT(deepLists, 10);
 }
 
 // timing = 'stages' measures the stages inside the pairs and changes nothing else. On one thread the stages lie
