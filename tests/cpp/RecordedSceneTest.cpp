@@ -102,12 +102,12 @@ TEST(RecordedScene, SameResultOnAnyNumberOfThreads) {
 }
 
 // The engine's candidate lists, taken from the near lists in batches, are the reference's pair for pair: every list
-// of the first 12 recorded steps of shaking and 8 of the landing window (pairs past the Hertz range, whose lists are as
+// of the first 10 recorded steps of shaking and 3 of the landing window (pairs past the Hertz range, whose lists are as
 // deep as the bodies), at the pose and for the skin and depth it was built with.
 TEST(RecordedScene, BatchedListsAreTheReferenceLists) {
   const ContactModel& model = scene().model;
   long lists = 0, candidates = 0, deepLists = 0;
-  for (const auto& [trajectory, steps] : {std::pair(&scene().shaking, 12), std::pair(&scene().landing, 8)}) {
+  for (const auto& [trajectory, steps] : {std::pair(&scene().shaking, 10), std::pair(&scene().landing, 3)}) {
     ContactData data;
     for (int step = 0; step < steps; ++step) {
       scene().setStates(data, *trajectory, step);
