@@ -41,12 +41,11 @@ namespace hn = hwy::HWY_NAMESPACE;
 // Writes the indices (into the scan's pairs) of those not rejected to `kept` (room for all); returns how many. A
 // compressed store may write a whole vector, lanes [keptCount, keptCount + lanes), which stays within the first
 // i + lanes <= count entries since keptCount <= i.
-size_t KeptNearPairs(const batched::NearScan& scan, int64_t* kept) {
+size_t KeptNearPairs(const batched::NearScan& q, int64_t* kept) {
   const hn::ScalableTag<double> d;
   const hn::RebindToSigned<decltype(d)> di;
   using V = hn::Vec<decltype(d)>;
   const size_t lanes = hn::Lanes(d);
-  const batched::NearScan& q = scan;
   const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), half = hn::Set(d, 0.5);
   const V skin = hn::Set(d, q.skin), reach = hn::Set(d, q.reach), turn = hn::Set(d, q.turn);
   const V inverseBound2 = hn::Set(d, 1 / q.bound2), margin = hn::Set(d, q.margin);
