@@ -110,23 +110,31 @@ size_t KeptNearPairs(const batched::NearScan& q, int64_t* kept) {
     const V pR = hn::GatherIndex(d, q.mesh1->radius.data(), s);
     const V qR = hn::GatherIndex(d, q.mesh2->radius.data(), t);
     const V moved = skin * hn::Max(one, hn::GatherIndex(d, q.mesh2->sphereCentreDistance.data(), t) * inverseBound2);
+    V fromOrigin2[3];
+    for (int k = 0; k < 3; ++k) fromOrigin2[k] = ps[k] - T[k];
+    const V apart = skin * hn::Max(one, hn::Min(hn::GatherIndex(d, q.mesh2->sphereCentreDistance.data(), t),
+                                                hn::Sqrt(dot(fromOrigin2, fromOrigin2))) *
+                                            inverseBound2);
     const V overlap = pR + qR - distance;
-    rejected = hn::Or(rejected, hn::Le(overlap + moved + margin, zero));
+    rejected = hn::Or(rejected, hn::Le(overlap + apart + margin, zero));
     gather3(q.mesh1->normal, s, pn);
     gather3(q.mesh2->normal, t, qn0);
     rotate(R, qn0, qn);
     rejected = hn::Or(rejected, hn::Le(dot(pn, sphereOffset) + moved + margin, zero));
     rejected = hn::Or(rejected, hn::Ge(dot(qn, sphereOffset), moved + turn * (distance + moved) + margin));
     // Filter 5, its first test: each projected circumcircle within reach of the contact circle, whose centre c and
-    // radius a_max can move with the motion (TrianglePairCandidates.cpp, canTouch). A pair at distance 0 gives NaN
-    // here, which rejects nothing.
+    // radius a_max can move with the motion (TrianglePairCandidates.cpp, canTouch), for pairs whose centres stay
+    // apart within it (the others go to the reference's test). A pair at distance 0 gives NaN here, which rejects
+    // nothing.
     V n[3], c[3];
     for (int k = 0; k < 3; ++k) n[k] = sphereOffset[k] / distance;
     const V x = ((distance - qR) * (distance + qR) + pR * pR) / (two * distance);
     for (int k = 0; k < 3; ++k) c[k] = ps[k] + x * n[k];
     const V tilt = hn::Min(two, two * moved / distance);
-    const V aMax = hn::Sqrt(hn::Max(overlap + moved + margin, zero) * pR * qR / (pR + qR));
-    const V shift = moved + hn::Abs(x) * tilt;
+    const V aMax = hn::Sqrt(hn::Max(overlap + apart + margin, zero) * pR * qR / (pR + qR));
+    const V nearest = distance - apart;
+    const V stretch = half + hn::Abs(qR - pR) * (qR + pR) / (two * nearest * nearest);
+    const V shift = stretch * apart + hn::Abs(x) * tilt;
     auto outOfReach = [&](const V centre[3], V radius) {
       V fromC[3];
       for (int k = 0; k < 3; ++k) fromC[k] = centre[k] - c[k];
@@ -134,7 +142,7 @@ size_t KeptNearPairs(const batched::NearScan& q, int64_t* kept) {
       const V reachable = aMax + radius + shift + (hn::Sqrt(squared) + radius) * tilt + skin + margin;
       return hn::Gt(squared - along * along, reachable * reachable);
     };
-    rejected = hn::Or(rejected, hn::Or(outOfReach(pc, pRho), outOfReach(qc, qRho)));
+    rejected = hn::Or(rejected, hn::And(hn::Gt(nearest, margin), hn::Or(outOfReach(pc, pRho), outOfReach(qc, qRho))));
     const auto index = hn::Iota(di, static_cast<int64_t>(i));
     keptCount += hn::CompressStore(index, hn::RebindMask(di, hn::Not(rejected)), di, kept + keptCount);
   }

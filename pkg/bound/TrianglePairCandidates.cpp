@@ -73,20 +73,30 @@ bool canTouch(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, 
   if ((qCircumcentre - p.circumcentre).squaredNorm() > balls * balls) return false;
   const Vector3r d = rotation * q.sphereCentre + translation - p.sphereCentre;
   const Real distance = d.norm();
-  const Real turn = skin / mesh2.sphereBoundRadius();  // the largest rotation within the skin [rad]
-  const Real moved = skin * std::max(Real(1), q.sphereCentre.norm() / mesh2.sphereBoundRadius());
+  const Real bound2 = mesh2.sphereBoundRadius();
+  const Real turn = skin / bound2;  // the largest rotation within the skin [rad]
+  const Real moved = skin * std::max(Real(1), q.sphereCentre.norm() / bound2);
+  // The centres' distance is the same seen from either body, so it changes by at most the smaller of their motions
+  // relative to the other body: s_t's in body 1's frame (moved), s_s's in body 2's, whose origin lies at
+  // `translation` (a flat or concave triangle's sphere centre lies the mesh's largest contact radius, by default 100
+  // r_eq, behind it: its own motion would admit nearly every pair).
+  const Real apart = skin * std::max(Real(1), std::min(q.sphereCentre.norm(), (p.sphereCentre - translation).norm()) / bound2);
   const Real overlap = p.radius + q.radius - distance;
-  if (overlap <= -moved) return false;
+  if (overlap <= -apart) return false;
   if (p.normal.dot(d) <= -moved || (rotation * q.normal).dot(d) >= moved + turn * (distance + moved)) return false;
   if (!full) return true;
-  // The contact circle now, and how far the motion can move it: its centre c = s_p + x n moves by at most
-  // moved (x) plus x times the turn of n (at most 2 moved / distance); its radius grows at most to a_max.
+  // The contact circle now, and how far the motion can move it: its centre c = s_p + x n moves by at most the change
+  // of x (|dx/dd| = |1/2 + (R_t^2 - R_s^2) / (2 d^2)| times that of the distance d, at most `apart`) plus x times the
+  // turn of n (at most 2 moved / distance); its radius grows at most to a_max.
+  const Real nearest = distance - apart;
+  if (!(nearest > 0)) return true;
   const Vector3r n = d / distance;
   const Real x = ((distance - q.radius) * (distance + q.radius) + p.radius * p.radius) / (2 * distance);
   const Vector3r c = p.sphereCentre + x * n;
   const Real tilt = std::min(Real(2), 2 * moved / distance);
-  const Real aMax = std::sqrt(std::max(overlap + moved, Real(0)) * p.radius * q.radius / (p.radius + q.radius));
-  const Real shift = moved + std::abs(x) * tilt;
+  const Real aMax = std::sqrt(std::max(overlap + apart, Real(0)) * p.radius * q.radius / (p.radius + q.radius));
+  const Real stretch = Real(0.5) + std::abs(q.radius - p.radius) * (q.radius + p.radius) / (2 * nearest * nearest);
+  const Real shift = stretch * apart + std::abs(x) * tilt;
   // A point at distance l from c shifts in the plane by at most shift + l tilt, and the partner's corners also
   // move by at most skin. First the projected circumcircles, which hold the projected triangles: each must come
   // within a_max of c.

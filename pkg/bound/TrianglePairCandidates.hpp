@@ -7,9 +7,13 @@
 //   Caps lie in their cap boxes (TriangleTree) and in the balls of radius rho about the circumcentres, so:
 //   (1) boxes:   the cap boxes come within depth + skin of each other (TriangleTree::queryPairs);
 //   (2) balls:   |cc_s - cc_t| <= rho_s + rho_t + depth + skin;
-//   (3) overlap: R_s + R_t - |s_s - s_t| > -m_t, where m_t bounds how far sphere centre t can move: a motion
+//   (3) overlap: R_s + R_t - |s_s - s_t| > -m, where m bounds how far the centres' distance can change: a motion
 //                that moves mesh 2's bound (radius r2 about its origin) by at most skin turns it by at most
-//                skin / r2, which moves a centre at distance |s_t| by at most skin * max(1, |s_t| / r2);
+//                skin / r2, which moves sphere centre t, at distance |s_t| from that origin, by at most
+//                m_t = skin * max(1, |s_t| / r2) in body 1's frame, and centre s by at most skin * max(1, l_s / r2)
+//                in body 2's (l_s its distance from body 2's origin); the distance changes by neither more, so m is
+//                the smaller (a flat or concave triangle's centre, 100 r_eq behind it by default, moves far on the
+//                slightest turn);
 //   (4) facing (Eq. B.5) within the same motions: n_s . d > -m_t and n_t . d < m_t + (skin / r2)(|d| + m_t),
 //                d = s_t - s_s;
 //   (5) circle:  S = P' n Q' meets the contact circle, so both projected triangles come within a of c and
