@@ -109,12 +109,11 @@ size_t KeptNearPairs(const batched::NearScan& q, int64_t* kept) {
     const V distance = hn::Sqrt(dot(sphereOffset, sphereOffset));
     const V pR = hn::GatherIndex(d, q.mesh1->radius.data(), s);
     const V qR = hn::GatherIndex(d, q.mesh2->radius.data(), t);
-    const V moved = skin * hn::Max(one, hn::GatherIndex(d, q.mesh2->sphereCentreDistance.data(), t) * inverseBound2);
-    V fromOrigin2[3];
-    for (int k = 0; k < 3; ++k) fromOrigin2[k] = ps[k] - T[k];
-    const V apart = skin * hn::Max(one, hn::Min(hn::GatherIndex(d, q.mesh2->sphereCentreDistance.data(), t),
-                                                hn::Sqrt(dot(fromOrigin2, fromOrigin2))) *
-                                            inverseBound2);
+    const V qsFromOrigin = hn::GatherIndex(d, q.mesh2->sphereCentreDistance.data(), t);
+    const V moved = skin * hn::Max(one, qsFromOrigin * inverseBound2);
+    V psFromOrigin2[3];
+    for (int k = 0; k < 3; ++k) psFromOrigin2[k] = ps[k] - T[k];
+    const V apart = skin * hn::Max(one, hn::Min(qsFromOrigin, hn::Sqrt(dot(psFromOrigin2, psFromOrigin2))) * inverseBound2);
     const V overlap = pR + qR - distance;
     rejected = hn::Or(rejected, hn::Le(overlap + apart + margin, zero));
     gather3(q.mesh1->normal, s, pn);
