@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "pkg/bound/BatchedCandidates.hpp"
 #include "pkg/bound/CapReach.hpp"
 
 namespace roundedmesh {
@@ -155,16 +156,22 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
   if (reaching1.empty()) return;
   for (int t = 0; t < mesh2.triangleCount(); ++t)
     if (capReaches(mesh2, t, PlacedMesh{mesh1, back, backTranslation}, 2 * skin)) reaching2.push_back(t);
+  thread_local std::vector<TrianglePair> inBoxes, kept;
+  inBoxes.clear();
   for (int t : reaching2) {
     const AlignedBox3r& box2 = mesh2.tree().triangleBox(t);
     const AlignedBox3r within = transformedBox(box2, rotation, translation, depth + skin);
     const AlignedBox3r nearer = transformedBox(box2, rotation, translation, shallow + skin);
     for (int s : reaching1) {
       const AlignedBox3r& box1 = mesh1.tree().triangleBox(s);
-      if (!box1.intersects(within) || box1.intersects(nearer)) continue;  // too far, or found above
-      if (canTouch(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin, false)) pairs.push_back({s, t});
+      if (box1.intersects(within) && !box1.intersects(nearer)) inBoxes.push_back({s, t});  // not too far, not found above
     }
   }
+  // These are many (every pair of the triangles at and in the other body), and few of them can touch: all five
+  // filters, batched, for this list's skin. Filter 5 holds for a pose within the skin of this one if the pair can
+  // touch there, so the lists taken from this one lose no pair they would keep.
+  touchableTrianglePairsBatched(mesh1, mesh2, rotation, translation, skin, depth, inBoxes, kept);
+  pairs.insert(pairs.end(), kept.begin(), kept.end());
 }
 
 bool touchablePair(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& rotation,

@@ -37,7 +37,9 @@ using TrianglePair = std::array<int, 2>;
 // Pairs whose cap boxes are more than `shallow` + skin apart can only be contacts deeper than `shallow`: they
 // are kept only if both caps reach the other body within the motion (capReaches of DeepContactCriterion.hpp,
 // slack 2 skin: the interpolated distance changes by at most sqrt(3) times the motion), and they are found among
-// the triangles whose caps reach, not by searching the trees (the same pairs, in another order).
+// the triangles whose caps reach, not by searching the trees. In a list deeper than twice `shallow` (a pair past
+// the Hertz range) these pairs must also pass filter 5 for this skin, which the other pairs of a near list are spared:
+// they are most of such a list, and few of them can touch.
 void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
                        const Vector3r& translation, Real skin, Real depth, Real shallow,
                        std::vector<TrianglePair>& pairs);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "pkg/law/FanQuadrature.hpp"
 #include "pkg/law/HertzPressure.hpp"
 #include "pkg/math/CirclePolygonArea.hpp"
 #include "pkg/math/DiskPolygonIntegrals.hpp"
@@ -25,30 +26,37 @@ bool useDirectRegime(const ConvexPolygon& s, Real a, const PressureOptions& opti
   return M_PI * a * a < options.gamma * areaPerPoint;
 }
 
-// S clipped to the square [-a, a]^2 around c; S itself when it lies in the square already (clipping would
-// return its corners unchanged).
+// S clipped to the square [-a, a]^2 around c, by the square's edges that have a corner of S beyond them only: clipping
+// by another returns the corners unchanged.
 ConvexPolygon clippedToSquare(const ConvexPolygon& polygon, Real a) {
-  for (int i = 0; i < polygon.size(); ++i)
-    if (std::abs(polygon[i].x()) > a || std::abs(polygon[i].y()) > a)
-      return polygon.intersection(ConvexPolygon::rectangle(Vector2r::Zero(), a, a));
-  return polygon;
+  const ConvexPolygon square = ConvexPolygon::rectangle(Vector2r::Zero(), a, a);
+  ConvexPolygon buffers[2];
+  int spare = 0;
+  const ConvexPolygon* current = &polygon;
+  for (int i = 0; i < square.size() && !current->empty(); ++i) {
+    const Vector2r &from = square[i], &to = square[(i + 1) % square.size()];
+    bool beyond = false;
+    for (int k = 0; k < current->size(); ++k) beyond |= !(cross2(to - from, (*current)[k] - from) >= 0);
+    if (!beyond) continue;
+    current->clipInto(from, to, buffers[spare]);
+    current = &buffers[spare];
+    spare = 1 - spare;
+  }
+  return *current;
 }
 
 // The pressure's shape sqrt(a^2 - r^2) is integrated once; the amplitudes, damped and elastic, scale it.
 NormalLoad integrateByQuadrature(const ConvexPolygon& polygon, const HertzPressure& pressure) {
-  Real integral = 0;
-  Vector2r moment = Vector2r::Zero();
   // The pressure is zero outside the circle: integrating over S clipped to the circle's square gives the same
   // integral with every quadrature point where the pressure is.
-  const ConvexPolygon s = clippedToSquare(polygon, std::sqrt(pressure.contactRadiusSq));
-  const QuadratureColumns& q = dunavant8Columns();
-  for (int j = 1; j + 1 < s.size(); ++j) {
-    const Vector2r &p0 = s[0], &p1 = s[j], &p2 = s[j + 1];
-    const Real area = 0.5 * cross2(p1 - p0, p2 - p0);
-    const QuadratureColumn x = q.l1 * p0.x() + q.l2 * p1.x() + q.l3 * p2.x();
-    const QuadratureColumn y = q.l1 * p0.y() + q.l2 * p1.y() + q.l3 * p2.y();
-    const QuadratureColumn dG =
-        area * q.weight * (pressure.contactRadiusSq - (x.square() + y.square())).max(Real(0)).sqrt();
+  FanQuadrature points;
+  fanQuadrature(clippedToSquare(polygon, std::sqrt(pressure.contactRadiusSq)), pressure.contactRadiusSq, points);
+  Real integral = 0;
+  Vector2r moment = Vector2r::Zero();
+  for (int j = 0; j < points.triangles; ++j) {
+    using Column = Eigen::Map<const QuadratureColumn, Eigen::Aligned64>;
+    const int at = FanQuadrature::kPoints * j;
+    const Column x(points.x + at), y(points.y + at), dG(points.dG + at);
     integral += dG.sum();
     moment += leverTimesNormal(Vector2r((dG * x).sum(), (dG * y).sum()));
   }
