@@ -156,7 +156,8 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
   if (reaching1.empty()) return;
   for (int t = 0; t < mesh2.triangleCount(); ++t)
     if (capReaches(mesh2, t, PlacedMesh{mesh1, back, backTranslation}, 2 * skin)) reaching2.push_back(t);
-  thread_local std::vector<TrianglePair> inBoxes, kept;
+  // Scratch kept by each thread (as large as its largest deep list), so that a step allocates nothing once warm.
+  thread_local std::vector<TrianglePair> inBoxes, touchable;
   inBoxes.clear();
   for (int t : reaching2) {
     const AlignedBox3r& box2 = mesh2.tree().triangleBox(t);
@@ -170,8 +171,8 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
   // These are many (every pair of the triangles at and in the other body), and few of them can touch: all five
   // filters, batched, for this list's skin. Filter 5 holds for a pose within the skin of this one if the pair can
   // touch there, so the lists taken from this one lose no pair they would keep.
-  touchableTrianglePairsBatched(mesh1, mesh2, rotation, translation, skin, depth, inBoxes, kept);
-  pairs.insert(pairs.end(), kept.begin(), kept.end());
+  touchableTrianglePairsBatched(mesh1, mesh2, rotation, translation, skin, depth, inBoxes, touchable);
+  pairs.insert(pairs.end(), touchable.begin(), touchable.end());
 }
 
 bool touchablePair(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& rotation,

@@ -38,7 +38,8 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // Each lane: x = (l1 x0 + l2 xj) + l3 xj+1 (y alike), dG = (area w) sqrt(max(a^2 - (x^2 + y^2), 0)), evaluated as
-// the reference's Eigen expression evaluates it. Max(0, v) keeps v when both are zeros, as Eigen's does.
+// the reference's Eigen expression evaluates it. Where Max(0, v) may differ from Eigen's max (both zeros, or a NaN,
+// on a processor other than x86) the shape is the same: a^2 - r^2 is never -0, and a NaN comes only from a NaN input.
 void FanQuadraturePoints(const fan::FanInput& in, FanQuadrature& out) {
   const hn::CappedTag<double, FanQuadrature::kPoints> d;  // a power of two lanes, at most 16: whole vectors
   const size_t lanes = hn::Lanes(d);
@@ -54,9 +55,9 @@ void FanQuadraturePoints(const fan::FanInput& in, FanQuadrature& out) {
       const auto shape = hn::Sqrt(hn::Max(zero, hn::Sub(radiusSq, hn::Add(hn::Mul(x, x), hn::Mul(y, y)))));
       const auto dG = hn::Mul(hn::Mul(area, hn::LoadU(d, in.weight + i)), shape);
       const size_t at = FanQuadrature::kPoints * j + i;
-      hn::Store(x, d, out.x + at);
-      hn::Store(y, d, out.y + at);
-      hn::Store(dG, d, out.dG + at);
+      hn::StoreU(x, d, out.x + at);
+      hn::StoreU(y, d, out.y + at);
+      hn::StoreU(dG, d, out.dG + at);
     }
   }
 }

@@ -26,31 +26,12 @@ bool useDirectRegime(const ConvexPolygon& s, Real a, const PressureOptions& opti
   return M_PI * a * a < options.gamma * areaPerPoint;
 }
 
-// S clipped to the square [-a, a]^2 around c, by the square's edges that have a corner of S beyond them only: clipping
-// by another returns the corners unchanged.
-ConvexPolygon clippedToSquare(const ConvexPolygon& polygon, Real a) {
-  const ConvexPolygon square = ConvexPolygon::rectangle(Vector2r::Zero(), a, a);
-  ConvexPolygon buffers[2];
-  int spare = 0;
-  const ConvexPolygon* current = &polygon;
-  for (int i = 0; i < square.size() && !current->empty(); ++i) {
-    const Vector2r &from = square[i], &to = square[(i + 1) % square.size()];
-    bool beyond = false;
-    for (int k = 0; k < current->size(); ++k) beyond |= !(cross2(to - from, (*current)[k] - from) >= 0);
-    if (!beyond) continue;
-    current->clipInto(from, to, buffers[spare]);
-    current = &buffers[spare];
-    spare = 1 - spare;
-  }
-  return *current;
-}
-
 // The pressure's shape sqrt(a^2 - r^2) is integrated once; the amplitudes, damped and elastic, scale it.
 NormalLoad integrateByQuadrature(const ConvexPolygon& polygon, const HertzPressure& pressure) {
   // The pressure is zero outside the circle: integrating over S clipped to the circle's square gives the same
   // integral with every quadrature point where the pressure is.
   FanQuadrature points;
-  fanQuadrature(clippedToSquare(polygon, std::sqrt(pressure.contactRadiusSq)), pressure.contactRadiusSq, points);
+  fanQuadrature(polygon.clippedToSquare(std::sqrt(pressure.contactRadiusSq)), pressure.contactRadiusSq, points);
   Real integral = 0;
   Vector2r moment = Vector2r::Zero();
   for (int j = 0; j < points.triangles; ++j) {

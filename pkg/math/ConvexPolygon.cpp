@@ -102,6 +102,23 @@ ConvexPolygon ConvexPolygon::intersection(const ConvexPolygon& clip) const {
   return *current;
 }
 
+ConvexPolygon ConvexPolygon::clippedToSquare(Real h) const {
+  const ConvexPolygon square = rectangle(Vector2r::Zero(), h, h);
+  ConvexPolygon buffers[2];
+  int spare = 0;
+  const ConvexPolygon* current = this;
+  for (int i = 0; i < square.size() && !current->empty(); ++i) {
+    const Vector2r &from = square[i], &to = square[(i + 1) % square.size()];
+    bool beyond = false;  // a corner that clipInto would not keep as it is
+    for (int k = 0; k < current->size(); ++k) beyond |= !(cross2(to - from, (*current)[k] - from) >= 0);
+    if (!beyond) continue;
+    current->clipInto(from, to, buffers[spare]);
+    current = &buffers[spare];
+    spare = 1 - spare;
+  }
+  return *current;
+}
+
 ConvexPolygon ConvexPolygon::translated(const Vector2r& offset) const {
   ConvexPolygon out = *this;
   for (int i = 0; i < size_; ++i) out.corners_[i] += offset;

@@ -38,6 +38,10 @@ class ConvexPolygon {
   void clipInto(const Vector2r& a, const Vector2r& b, ConvexPolygon& out) const;
   // Intersection with another convex polygon.
   ConvexPolygon intersection(const ConvexPolygon& clip) const;
+  // Intersection with the square [-h, h]^2 about the origin, clipped only by the square's edges that have a corner
+  // beyond them: the same corners as intersection(rectangle(0, h, h)), since clipping by another returns them
+  // unchanged, for fewer clips where most of a polygon lies inside.
+  ConvexPolygon clippedToSquare(Real h) const;
   ConvexPolygon translated(const Vector2r& offset) const;
 
  private:

@@ -1,7 +1,10 @@
 // The polygon S of Section 2.3: construction, clipping, containment and closest point.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "pkg/math/ConvexPolygon.hpp"
+#include "tests/support/RandomPairs.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -53,6 +56,36 @@ TEST(ConvexPolygon, ContainsAndClosestPoint) {
   EXPECT_TRUE(t.closestPoint({1.5, 1.5}).isApprox(Vector2r(1, 1), 1e-15));
   EXPECT_TRUE(t.closestPoint({-1, -2}).isApprox(Vector2r(0, 0), 1e-15));
   EXPECT_TRUE(t.closestPoint({0.5, 0.5}).isApprox(Vector2r(0.5, 0.5), 1e-15));
+}
+
+// clippedToSquare skips the square's edges that every corner is inside of; the result must be intersection's, corner
+// for corner and bit for bit: random triangles and their intersections with another, from wholly inside the square to
+// wholly outside, and corners exactly on its edges.
+TEST(ConvexPolygon, ClippingToASquareIsTheIntersectionWithIt) {
+  test::RandomSource random(1409);
+  int clipped = 0, inside = 0, empty = 0;
+  for (int trial = 0; trial < 100000; ++trial) {
+    const Real h = random.uniform(0.1, 1), spread = random.uniform(0.2, 3) * h;
+    auto point = [&] {
+      // A corner on an edge of the square now and then.
+      if (random.uniform(0, 1) < 0.05) return Vector2r(h, random.uniform(-spread, spread));
+      return Vector2r(random.uniform(-spread, spread), random.uniform(-spread, spread));
+    };
+    ConvexPolygon p = ConvexPolygon::triangle(point(), point(), point());
+    if (trial % 2) p = p.intersection(ConvexPolygon::triangle(point(), point(), point()));
+    const ConvexPolygon reference = p.intersection(ConvexPolygon::rectangle(Vector2r::Zero(), h, h));
+    const ConvexPolygon square = p.clippedToSquare(h);
+    ASSERT_EQ(square.size(), reference.size()) << "trial " << trial;
+    for (int i = 0; i < square.size(); ++i)
+      ASSERT_EQ(std::memcmp(square[i].data(), reference[i].data(), sizeof(Vector2r)), 0) << "trial " << trial;
+    if (reference.empty()) ++empty;
+    else if (reference.size() == p.size() && reference.area() == p.area()) ++inside;
+    else ++clipped;
+  }
+  // Each case is common: clipped, wholly inside (no clip at all), and empty.
+  EXPECT_GT(clipped, 10000);
+  EXPECT_GT(inside, 5000);
+  EXPECT_GT(empty, 5000);
 }
 
 }  // namespace

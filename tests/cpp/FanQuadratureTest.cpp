@@ -2,13 +2,17 @@
 // random polygons of 3 to 10 corners, against Law2's quadrature written one Eigen expression per triangle of the fan
 // (the code it replaced), with contact circles from inside the polygon's corners to well beyond them, so that points
 // outside the circle (shape 0) and inside are both common. No tolerance: the same operations in the same order round
-// the same way on any vector unit. The fan's integral of the shape is also checked against the closed form over a
+// the same way on any vector unit: each instruction set the processor has and the build compiled is run in turn (on an
+// AVX-512 machine: AVX3, AVX2, SSE4, SSSE3 and Highway's scalar fallback). The fan's integral of the shape is also checked against the closed form over a
 // polygon that holds the whole circle, within the rule's own error.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
+#include "hwy/targets.h"
 #include "pkg/law/FanQuadrature.hpp"
 #include "pkg/math/DunavantRule.hpp"
 #include "tests/support/RandomPairs.hpp"
@@ -42,36 +46,43 @@ ConvexPolygon randomPolygon(test::RandomSource& random, Real size) {
 }
 
 TEST(FanQuadrature, RandomPolygonsGiveTheReferencePointsBitForBit) {
-  test::RandomSource random(4139);
   const QuadratureColumns& q = dunavant8Columns();
-  long lanes = 0, outside = 0, inside = 0;
-  int largest = 0;
-  for (long trial = 0; trial < 100000; ++trial) {
-    const Real size = std::exp(random.uniform(std::log(1e-6), std::log(1.0)));
-    const ConvexPolygon s = randomPolygon(random, size);
-    const Real a = size * random.uniform(0.05, 2.0);
-    FanQuadrature batched;
-    fanQuadrature(s, a * a, batched);
-    ASSERT_EQ(batched.triangles, s.size() - 2);
-    largest = std::max(largest, s.size());
-    for (int j = 1; j + 1 < s.size(); ++j) {
-      const Vector2r &p0 = s[0], &p1 = s[j], &p2 = s[j + 1];
-      const Real area = 0.5 * cross2(p1 - p0, p2 - p0);
-      const QuadratureColumn x = q.l1 * p0.x() + q.l2 * p1.x() + q.l3 * p2.x();
-      const QuadratureColumn y = q.l1 * p0.y() + q.l2 * p1.y() + q.l3 * p2.y();
-      const QuadratureColumn dG = area * q.weight * (a * a - (x.square() + y.square())).max(Real(0)).sqrt();
-      for (int i = 0; i < FanQuadrature::kPoints; ++i) {
-        const int at = FanQuadrature::kPoints * (j - 1) + i;
-        ASSERT_TRUE(sameBits(batched.x[at], x[i]) && sameBits(batched.y[at], y[i]) && sameBits(batched.dG[at], dG[i]))
-            << "trial " << trial << ", triangle " << j << ", point " << i << ": " << batched.dG[at] << " vs " << dG[i];
-        ++lanes;
-        (dG[i] == 0 ? outside : inside) += 1;
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  ASSERT_FALSE(targets.empty());
+  for (const int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    test::RandomSource random(4139);
+    long lanes = 0, outside = 0, inside = 0;
+    int largest = 0;
+    for (long trial = 0; trial < 100000; ++trial) {
+      const Real size = std::exp(random.uniform(std::log(1e-6), std::log(1.0)));
+      const ConvexPolygon s = randomPolygon(random, size);
+      const Real a = size * random.uniform(0.05, 2.0);
+      FanQuadrature batched;
+      fanQuadrature(s, a * a, batched);
+      ASSERT_EQ(batched.triangles, s.size() - 2);
+      largest = std::max(largest, s.size());
+      for (int j = 1; j + 1 < s.size(); ++j) {
+        const Vector2r &p0 = s[0], &p1 = s[j], &p2 = s[j + 1];
+        const Real area = 0.5 * cross2(p1 - p0, p2 - p0);
+        const QuadratureColumn x = q.l1 * p0.x() + q.l2 * p1.x() + q.l3 * p2.x();
+        const QuadratureColumn y = q.l1 * p0.y() + q.l2 * p1.y() + q.l3 * p2.y();
+        const QuadratureColumn dG = area * q.weight * (a * a - (x.square() + y.square())).max(Real(0)).sqrt();
+        for (int i = 0; i < FanQuadrature::kPoints; ++i) {
+          const int at = FanQuadrature::kPoints * (j - 1) + i;
+          ASSERT_TRUE(sameBits(batched.x[at], x[i]) && sameBits(batched.y[at], y[i]) && sameBits(batched.dG[at], dG[i]))
+              << "trial " << trial << ", triangle " << j << ", point " << i << ": " << batched.dG[at] << " vs " << dG[i];
+          ++lanes;
+          (dG[i] == 0 ? outside : inside) += 1;
+        }
       }
     }
+    EXPECT_EQ(largest, ConvexPolygon::kCapacity);  // every fan length up to the capacity was drawn
+    EXPECT_GT(outside, lanes / 10);
+    EXPECT_GT(inside, lanes / 10);
   }
-  EXPECT_EQ(largest, ConvexPolygon::kCapacity);  // every fan length up to the capacity was drawn
-  EXPECT_GT(outside, lanes / 10);
-  EXPECT_GT(inside, lanes / 10);
+  hwy::SetSupportedTargetsForTest(0);  // the processor's own again
 }
 
 // Over a square that holds the circle, the shape's integral is 2 pi a^3 / 3 (the Hertz pressure's volume over its

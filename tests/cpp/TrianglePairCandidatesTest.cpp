@@ -7,8 +7,8 @@
 // contact the bodies can have.
 #include <gtest/gtest.h>
 
-#include <random>
 #include <map>
+#include <random>
 #include <set>
 
 #include "bench/RecordedScene.hpp"
@@ -22,9 +22,9 @@ namespace {
 
 // Every pair of `all` in contact by Appendix B (and, past `shallow`, the deep-contact criterion, as the engine's lists
 // promise) with an effective overlap of at most `depth`, and that overlap.
-std::map<TrianglePair, Real> contactsWithin(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
-                                      const Vector3r& translation, const std::vector<TrianglePair>& all, Real depth,
-                                      Real shallow) {
+std::map<TrianglePair, Real> contactsWithin(const RoundedMesh& mesh1, const RoundedMesh& mesh2,
+                                            const Matrix3r& rotation, const Vector3r& translation,
+                                            const std::vector<TrianglePair>& all, Real depth, Real shallow) {
   std::vector<PressureGeom> geoms;
   Ig2_RoundedMesh_RoundedMesh_PressureGeom(mesh1, mesh2, rotation, translation, all, shallow, RelativeMotion(), geoms);
   std::map<TrianglePair, Real> found;
@@ -125,6 +125,7 @@ TEST(TrianglePairCandidates, DeepListsHoldEveryContactWithinTheirSkin) {
   const RecordedScene scene = loadRecordedScene();
   ContactData data;
   const std::vector<PairPose> pairs = touchingPairs(scene, data);
+  ASSERT_GE(pairs.size(), 2u);
   std::mt19937 rng(11);
   Checked checked;
   for (size_t k = 0; k < 2; ++k) {
