@@ -165,7 +165,8 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
     const AlignedBox3r nearer = transformedBox(box2, rotation, translation, shallow + skin);
     for (int s : reaching1) {
       const AlignedBox3r& box1 = mesh1.tree().triangleBox(s);
-      if (box1.intersects(within) && !box1.intersects(nearer)) inBoxes.push_back({s, t});  // not too far, not found above
+      // Not too far, and not found above.
+      if (box1.intersects(within) && !box1.intersects(nearer)) inBoxes.push_back({s, t});
     }
   }
   // These are many (every pair of the triangles at and in the other body), and few of them can touch: all five

@@ -20,9 +20,10 @@
 //                overlap; tested on the plane of now, with a grown to its largest within the motion and every
 //                distance given the slack by which the motion can move c, tilt n and move the corners.
 // Two levels, as a Verlet list with an outer shell: nearTrianglePairs searches the triangle trees with
-// filters 1-4 (all five for a deep pair's pairs past the Hertz range) for a large skin, rarely; touchableTrianglePairs takes from such a list, with no search, the
-// pairs that pass all five filters for a small skin. A pose within the small skin of the inner list's, whose
-// pose is within (large - small) of the outer list's, is within the large skin of the outer list's.
+// filters 1-4 (all five for a deep pair's pairs past the Hertz range) for a large skin, rarely;
+// touchableTrianglePairs takes from such a list, with no search, the pairs that pass all five filters for a small
+// skin. A pose within the small skin of the inner list's, whose pose is within (large - small) of the outer list's,
+// is within the large skin of the outer list's.
 #pragma once
 
 #include <array>

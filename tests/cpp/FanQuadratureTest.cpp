@@ -2,9 +2,9 @@
 // random polygons of 3 to 10 corners, against Law2's quadrature written one Eigen expression per triangle of the fan
 // (the code it replaced), with contact circles from inside the polygon's corners to well beyond them, so that points
 // outside the circle (shape 0) and inside are both common. No tolerance: the same operations in the same order round
-// the same way on any vector unit: each instruction set the processor has and the build compiled is run in turn (on an
-// AVX-512 machine: AVX3, AVX2, SSE4, SSSE3 and Highway's scalar fallback). The fan's integral of the shape is also checked against the closed form over a
-// polygon that holds the whole circle, within the rule's own error.
+// the same way on any vector unit: each instruction set the processor has and the build compiled is run in turn (on
+// an AVX-512 machine: AVX3, AVX2, SSE4, SSSE3 and Highway's scalar fallback). The fan's integral of the shape is also
+// checked against the closed form over a polygon that holds the whole circle, within the rule's own error.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,7 +40,8 @@ ConvexPolygon randomPolygon(test::RandomSource& random, Real size) {
   for (;;) {
     ConvexPolygon p = ConvexPolygon::triangle(point(), point(), point());
     if (random.uniform(0, 1) < 0.7) p = p.intersection(ConvexPolygon::triangle(point(), point(), point()));
-    if (random.uniform(0, 1) < 0.5) p = p.intersection(ConvexPolygon::rectangle(Vector2r::Zero(), 0.5 * size, 0.5 * size));
+    if (random.uniform(0, 1) < 0.5)
+      p = p.intersection(ConvexPolygon::rectangle(Vector2r::Zero(), 0.5 * size, 0.5 * size));
     if (!p.empty()) return p;
   }
 }
@@ -72,7 +73,8 @@ TEST(FanQuadrature, RandomPolygonsGiveTheReferencePointsBitForBit) {
         for (int i = 0; i < FanQuadrature::kPoints; ++i) {
           const int at = FanQuadrature::kPoints * (j - 1) + i;
           ASSERT_TRUE(sameBits(batched.x[at], x[i]) && sameBits(batched.y[at], y[i]) && sameBits(batched.dG[at], dG[i]))
-              << "trial " << trial << ", triangle " << j << ", point " << i << ": " << batched.dG[at] << " vs " << dG[i];
+              << "trial " << trial << ", triangle " << j << ", point " << i << ": " << batched.dG[at] << " vs "
+              << dG[i];
           ++lanes;
           (dG[i] == 0 ? outside : inside) += 1;
         }
