@@ -132,12 +132,15 @@ void broadPhase(const ContactModel& model, ContactData& data) {
   std::vector<AlignedBox3r>& boxes = data.boxes;
   boxes.resize(count);
   Real smallest = kInfinity;
+  // A body absent from this process (under yade.mpy) has an empty box: it is no one's neighbour.
   for (int b = 0; b < bodyCount; ++b) {
-    boxes[b] = ball(data.bodyStates[b].position, model.bodies[b].mesh->sphereBoundRadius());
+    boxes[b] = data.present(b) ? ball(data.bodyStates[b].position, model.bodies[b].mesh->sphereBoundRadius())
+                               : AlignedBox3r();
     smallest = std::min(smallest, model.bodies[b].equivalentRadius);
   }
   for (int p = 0; p < count - bodyCount; ++p) {
-    boxes[bodyCount + p] = partnerBox(model.partners[p].shape, data.partnerStates[p]);
+    boxes[bodyCount + p] =
+        data.present(bodyCount + p) ? partnerBox(model.partners[p].shape, data.partnerStates[p]) : AlignedBox3r();
     if (model.partners[p].sphereBody) smallest = std::min(smallest, std::get<Sphere>(model.partners[p].shape).radius);
   }
   bool current = static_cast<int>(data.neighbourBoxes.size()) == count;
@@ -151,12 +154,14 @@ void broadPhase(const ContactModel& model, ContactData& data) {
     const int clump = data.clump(pair.body);
     const int otherClump = data.clump(pair.other);
     const bool apart =
-        (clump >= 0 && clump == otherClump) || !boxes[pair.body].intersects(boxes[pair.other]) ||
+        !data.computesPair(pair.body, pair.other) || (clump >= 0 && clump == otherClump) ||
+        !boxes[pair.body].intersects(boxes[pair.other]) ||
         (pair.other < bodyCount &&
          (data.bodyStates[pair.body].position - data.bodyStates[pair.other].position).norm() >=
              model.bodies[pair.body].mesh->sphereBoundRadius() + model.bodies[pair.other].mesh->sphereBoundRadius());
     if (apart) {
-      // Not touching: the pair's spring is forgotten (it had let go in the step the pair stopped touching).
+      // Not touching, or another process's: the pair's spring is forgotten (it had let go in the step the pair
+      // stopped touching).
       data.springs[pair.neighbour] = TangentialSpring();
       continue;
     }

@@ -42,6 +42,7 @@ void ContactData::resize(const ContactModel& model) {
   partnerMasses.resize(model.partners.size());
   bodyInertias.resize(model.bodies.size(), Vector3r::Zero());
   partnerInertias.resize(model.partners.size(), Vector3r::Zero());
+  residences.resize(model.bodies.size() + model.partners.size(), Residence::Own);
 }
 
 namespace {

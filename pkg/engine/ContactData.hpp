@@ -160,6 +160,15 @@ struct CandidateList {
   std::vector<std::array<int, 2>> near;
 };
 
+// Where a body or partner is, seen from this process, when YADE's MPI decomposition (yade.mpy) splits the scene
+// over processes (doc/architecture.md, "Many processes"). In one process every body is Own.
+enum class Residence : unsigned char {
+  Own,     // this process moves it
+  Master,  // owned by the master process (rank 0), which receives its forces from here (a Wall, a Box, a Facet)
+  Image,   // another worker owns it; this process holds its copy, with the owner's state
+  Absent,  // not in this process
+};
+
 struct ContactData {
   std::vector<BodyState> bodyStates;
   std::vector<BodyState> partnerStates;
@@ -180,6 +189,10 @@ struct ContactData {
   std::vector<int> partnerClumps;
   std::vector<Wrench> bodyWrenches;
   std::vector<Wrench> partnerWrenches;
+  // Bodies, then partners (engine indices). A pair is computed where one of its sides is Own and neither is
+  // Absent, so a pair of two workers' bodies on both workers (each applies its own side's wrench, as YADE's own
+  // engines do under yade.mpy) and a pair with a master's body once; wrenches go to Own and Master bodies.
+  std::vector<Residence> residences;
   ContactStatistics statistics;
   StageTimes times;
 
@@ -209,6 +222,14 @@ struct ContactData {
   const BodyState& state(int index) const {
     const int bodyCount = static_cast<int>(bodyStates.size());
     return index < bodyCount ? bodyStates[index] : partnerStates[index - bodyCount];
+  }
+  bool present(int index) const { return residences[index] != Residence::Absent; }
+  bool computesPair(int index, int other) const {
+    return present(index) && present(other) &&
+           (residences[index] == Residence::Own || residences[other] == Residence::Own);
+  }
+  bool appliesWrench(int index) const {
+    return residences[index] == Residence::Own || residences[index] == Residence::Master;
   }
   int clump(int index) const {
     const int bodyCount = static_cast<int>(bodyClumps.size());

@@ -65,9 +65,14 @@ void reportStep(const ContactModel& model, const ContactData& data, bool first, 
   if (report.fastest.fraction > kFastStep) report.fastTimeStep = impactLimit(model, data, report.fastest.speed);
   for (size_t k = 0; k < data.pairs.size(); ++k) {
     const PairSummary& s = data.pairResults[k].summary;
-    report.energy.elastic += s.elasticEnergy;
-    report.energy.dampingPower += s.dampingPower;
-    report.energy.frictionPower += s.frictionPower;
+    // A pair of two workers' bodies is computed on both (ContactData::residences): half its energy is this
+    // process's, so that the energies of all processes add up to the scene's.
+    const BodyPair& pair = data.pairs[k];
+    const bool shared = data.residences[pair.body] == Residence::Image || data.residences[pair.other] == Residence::Image;
+    const Real share = shared ? 0.5 : 1.0;
+    report.energy.elastic += share * s.elasticEnergy;
+    report.energy.dampingPower += share * s.dampingPower;
+    report.energy.frictionPower += share * s.frictionPower;
   }
   for (const PairRecord& r : data.keptRecords) {
     const Real size = std::min(sideSize(model, r.body), sideSize(model, r.other));

@@ -128,12 +128,13 @@ FastBody fastestBody(const ContactModel& model, const ContactData& data, Real dt
     if (fraction > fastest.fraction) fastest = {index, speed, fraction, depth};
   };
   for (int b = 0; b < bodyCount; ++b) {
+    if (data.residences[b] != Residence::Own) continue;  // another process reports it
     const BodyState& s = data.bodyStates[b];
     consider(b, s.velocity.norm() + s.angularVelocity.norm() * model.bodies[b].mesh->sphereBoundRadius());
   }
   // A sphere's turn does not move its surface toward anything.
   for (size_t p = 0; p < model.partners.size(); ++p)
-    if (model.partners[p].sphereBody) consider(bodyCount + static_cast<int>(p), data.partnerStates[p].velocity.norm());
+    if (model.partners[p].sphereBody && data.residences[bodyCount + p] == Residence::Own) consider(bodyCount + static_cast<int>(p), data.partnerStates[p].velocity.norm());
   return fastest;
 }
 

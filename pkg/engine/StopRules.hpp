@@ -38,7 +38,8 @@ std::vector<StopReason> checkStopRules(const ContactModel& model, ContactData& d
 void commitStep(ContactData& data);
 
 // The body (rounded or sphere body) whose points move fastest relative to its contact depth kDeepestOverlap * size
-// in a step of dt [s]: the speed of its centre plus its angular speed times its bound radius, times dt.
+// in a step of dt [s]: the speed of its centre plus its angular speed times its bound radius, times dt. Among the
+// bodies this process owns (ContactData::residences).
 struct FastBody {
   int body = -1;        // engine index, -1 if nothing moves
   Real speed = 0;       // [m/s]

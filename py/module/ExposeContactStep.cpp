@@ -40,6 +40,11 @@ class SceneContacts {
     const int id = bp::extract<int>(body.attr("id"));
     model_.partners.push_back({id, yadeShape(body, id), material, false, edgeRadius});
   }
+  // A Wall, Box or Facet partner that is not in this process under yade.mpy: its shape is read when it arrives
+  // (readScene); until then it is a plane, for the time-step check alone.
+  void addAbsentPartner(int id, const HertzMaterial& material, Real edgeRadius) {
+    model_.partners.push_back({id, Plane{Vector3r::Zero(), Vector3r::UnitZ()}, material, false, edgeRadius});
+  }
   // A sphere body (rm.add_sphere): a YADE Sphere whose contacts with every partner the engine computes too.
   void addSphere(const bp::object& body, const HertzMaterial& material) {
     const int id = bp::extract<int>(body.attr("id"));
@@ -59,11 +64,12 @@ class SceneContacts {
   // 'stops' [(cause 'crossed' or 'overlap', id, other id, overlap [m], size [m], point [m])], 'stop_speed' [m/s],
   // 'stop_time_step' [s], 'fastest' (id or -1, speed [m/s], fraction of its contact depth per step, that depth
   // [m], impact time step [s] or 0), 'deep_starts' [(id, other id, overlap [m], size [m])], 'energy' (elastic
-  // [J], normal damping [W], friction [W]).
-  bp::dict step(const bp::object& omega) {
+  // [J], normal damping [W], friction [W]). rank: this process's once yade.mpy has split the scene (its pairs and
+  // wrenches, YadeBridge.hpp, readScene), -1 in one process.
+  bp::dict step(const bp::object& omega, int rank) {
     const auto start = std::chrono::steady_clock::now();
     bp::dict report;
-    const std::vector<int> missing = readScene(omega, model_, data_);
+    const std::vector<int> missing = readScene(omega, model_, data_, rank);
     if (!missing.empty()) {
       bp::list ids;
       for (int id : missing) ids.append(id);
@@ -427,10 +433,12 @@ void exposeContactStep() {
       .def("add_body", &SceneContacts::addBody, (bp::arg("id"), bp::arg("mesh"), bp::arg("material")))
       .def("add_partner", &SceneContacts::addPartner,
            (bp::arg("body"), bp::arg("material"), bp::arg("edge_radius") = -1.0))
+      .def("add_absent_partner", &SceneContacts::addAbsentPartner,
+           (bp::arg("id"), bp::arg("material"), bp::arg("edge_radius") = -1.0))
       .def("add_sphere", &SceneContacts::addSphere, (bp::arg("body"), bp::arg("material")))
       .def("set_options", &SceneContacts::setOptions, bp::arg("options"))
       .add_property("options", bp::make_function(&SceneContacts::options, bp::return_value_policy<bp::copy_const_reference>()))
-      .def("step", &SceneContacts::step, bp::arg("O"))
+      .def("step", &SceneContacts::step, (bp::arg("O"), bp::arg("rank") = -1))
       .def("stability_limit", &SceneContacts::stabilityLimit, (bp::arg("O"), bp::arg("impact_speed") = 0.0))
       .add_property("statistics", &SceneContacts::statistics)
       .def("contacts", &SceneContacts::contacts)

@@ -390,6 +390,9 @@ void exposeMesh() {
       .add_property("sphere_centres",
                     +[](const BodyMesh& m) { return toArray(perTriangle(m, &RoundedTriangle::sphereCentre)); },
                     "(m, 3) centre of each triangle's encompassing sphere, principal frame [m]")
+      .add_property("bound_radius", +[](const BodyMesh& m) { return m.shape().sphereBoundRadius(); },
+                    "radius of the ball about the centre of mass that holds the whole rounded body [m]: no partner\n"
+                    "outside it can touch the body")
       .add_property("volume", &BodyMesh::volume, "enclosed volume [m^3]")
       .add_property("centroid", &centroid, "centre of mass in the coordinates the mesh was given in [m]")
       .add_property("orientation", +[](const BodyMesh& m) { return m.inputOrientation(); },

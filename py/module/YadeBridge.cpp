@@ -59,6 +59,17 @@ void requireOwnMaterial(const bp::object& body, int id, const char* kind) {
                               "roundedmesh.set_material(" + std::to_string(id) + ", material)");
 }
 
+// Where `body` is, seen from process `rank` (readScene).
+Residence residence(const bp::object& body, int rank) {
+  if (rank < 0) return Residence::Own;
+  const int owner = bp::extract<int>(body.attr("subdomain"));
+  if (owner == rank) return Residence::Own;
+  // The master computes only the pairs among its own bodies: the workers compute every other pair and send it
+  // the forces on its bodies. A worker's body the master still holds has a stale state.
+  if (rank == 0) return Residence::Absent;
+  return owner == 0 ? Residence::Master : Residence::Image;
+}
+
 }  // namespace
 
 PartnerShape yadeShape(const bp::object& body, int id) {
@@ -85,15 +96,22 @@ Sphere sphereShape(const bp::object& body, int id) {
   return *sphere;
 }
 
-std::vector<int> readScene(const bp::object& omega, ContactModel& model, ContactData& data) {
+std::vector<int> readScene(const bp::object& omega, ContactModel& model, ContactData& data, int rank) {
   const bp::object bodies = omega.attr("bodies");
   std::vector<int> missing;
   data.resize(model);
   data.timeStep = bp::extract<Real>(omega.attr("dt"));
-  for (size_t b = 0; b < model.bodies.size(); ++b) {
+  const int bodyCount = static_cast<int>(model.bodies.size());
+  // Not in the scene: missing in one process; under yade.mpy, in another process.
+  auto absent = [&](int index, int id) {
+    data.residences[index] = Residence::Absent;
+    if (rank < 0) missing.push_back(id);
+  };
+  for (int b = 0; b < bodyCount; ++b) {
     const bp::object body = bodyOrNone(bodies, model.bodies[b].id);
-    if (body.is_none()) {
-      missing.push_back(model.bodies[b].id);
+    data.residences[b] = body.is_none() ? Residence::Absent : residence(body, rank);
+    if (data.residences[b] == Residence::Absent) {
+      absent(b, model.bodies[b].id);
       data.bodyMasses[b] = 0;  // puts no limit on the time step
       continue;
     }
@@ -105,8 +123,10 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
   for (size_t p = 0; p < model.partners.size(); ++p) {
     Partner& partner = model.partners[p];
     const bp::object body = bodyOrNone(bodies, partner.id);
-    if (body.is_none()) {
-      missing.push_back(partner.id);
+    const int index = bodyCount + static_cast<int>(p);
+    data.residences[index] = body.is_none() ? Residence::Absent : residence(body, rank);
+    if (data.residences[index] == Residence::Absent) {
+      absent(index, partner.id);
       data.partnerMasses[p] = 0;
       continue;
     }
@@ -133,12 +153,15 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
 void applyWrenches(const bp::object& omega, const ContactModel& model, const ContactData& data) {
   const bp::object forces = omega.attr("forces");
   const bp::object addF = forces.attr("addF"), addT = forces.attr("addT");
-  auto apply = [&](int id, const Wrench& w) {
+  auto apply = [&](int index, int id, const Wrench& w) {
+    if (!data.appliesWrench(index)) return;
     if (!w.force.isZero(0)) addF(id, w.force);
     if (!w.torque.isZero(0)) addT(id, w.torque);
   };
-  for (size_t b = 0; b < model.bodies.size(); ++b) apply(model.bodies[b].id, data.bodyWrenches[b]);
-  for (size_t p = 0; p < model.partners.size(); ++p) apply(model.partners[p].id, data.partnerWrenches[p]);
+  const int bodyCount = static_cast<int>(model.bodies.size());
+  for (int b = 0; b < bodyCount; ++b) apply(b, model.bodies[b].id, data.bodyWrenches[b]);
+  for (size_t p = 0; p < model.partners.size(); ++p)
+    apply(bodyCount + static_cast<int>(p), model.partners[p].id, data.partnerWrenches[p]);
 }
 
 }  // namespace roundedmesh::python

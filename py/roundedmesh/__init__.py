@@ -12,7 +12,7 @@ discrete element method", Comput. Methods Appl. Mech. Engrg. 277 (2014) 219-238,
     O.engines = [ForceResetter(), rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
 
 The user's modules come with the package: rm.scene (written as rm.bodies, rm.stepping and rm.readout), rm.contact,
-rm.export, rm.progress, rm.checkpoint, rm.meshfiles, rm.shapes, rm.model_choice, rm.placement. The code of the
+rm.export, rm.progress, rm.checkpoint, rm.meshfiles, rm.mpi (YADE's MPI decomposition, yade.mpy), rm.shapes, rm.model_choice, rm.placement. The code of the
 validation and the studies (analytic references, the reference scenes, YADE's peers, the speed-against-error study,
 benchmark helpers) is the package roundedmesh_study beside this one, which uses roundedmesh; roundedmesh never
 imports it. See doc/user-guide.md.
@@ -22,7 +22,7 @@ the speed-against-error study (doc/speed-vs-error.md), read from the table model
 package (rm.model_choice); rm.add_body(mesh, ..., error=0.05) applies its mesh.
 """
 from . import _yade  # noqa: F401  (YADE's converters must exist before _core returns vectors)
-from . import checkpoint, contact, export, meshfiles, model_choice, placement, progress, scene, shapes  # noqa: F401
+from . import checkpoint, contact, export, meshfiles, model_choice, mpi, placement, progress, scene, shapes  # noqa: F401
 from ._core import EngineOptions, HertzMaterial, Mesh
 from .contact import body_contact, partner_contact, plane_contact, sphere_contact, triangle_contacts
 from .model_choice import cheapest_model

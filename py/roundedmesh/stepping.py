@@ -43,10 +43,18 @@ def engine(label="", options=None, **named):
     return PyRunner(command=f"{_ENGINE_COMMAND}({key!r})", iterPeriod=1, initRun=True, label=label)
 
 
-class _SceneState:
-    """The contacts of the scene (_core.SceneContacts) built from one revision of its tags."""
+def _mpi_rank():
+    """This process's rank once YADE's MPI decomposition (yade.mpy) has split the scene, else -1: the engine then
+    computes this process's pairs and applies the wrenches of its bodies (rm.mpi, doc/user-guide.md)."""
+    mpy = sys.modules.get("yade.mpy")
+    return mpy.rank if mpy is not None and getattr(O, "splitted", False) else -1
 
-    def __init__(self, revision):
+
+class _SceneState:
+    """The contacts of the scene (_core.SceneContacts) built from one revision of its tags. Under yade.mpy (rank >=
+    0) a process holds only some of the bodies: the others are kept, absent, until they arrive."""
+
+    def __init__(self, revision, rank=-1):
         self.revision = revision
         self.contacts = SceneContacts()
         self.meshes = {}  # keeps the meshes alive, and shared between bodies, while this state lives
@@ -61,15 +69,20 @@ class _SceneState:
         partners = [(int(i), r, kind) for kind in ("sphere", "partner") for i, r in _tags_named(kind).items()]
         for body_id, record, kind in sorted(partners):
             body = _body_or_none(body_id)
-            if body is not None:
-                materials.append(_material(json.loads(record)))
-                if kind == "sphere":
-                    self.contacts.add_sphere(body, materials[-1])
-                else:
-                    edge_radius = _tag(f"edge_radius.{body_id}")
-                    self.contacts.add_partner(body, materials[-1], float(edge_radius) if edge_radius else -1.0)
-                self.partner_ids.append(body_id)
+            if body is None and (rank < 0 or kind == "sphere"):
+                continue
+            materials.append(_material(json.loads(record)))
+            edge_radius = _tag(f"edge_radius.{body_id}")
+            edge_radius = float(edge_radius) if edge_radius else -1.0
+            if kind == "sphere":
+                self.contacts.add_sphere(body, materials[-1])
+            elif body is None:
+                self.contacts.add_absent_partner(body_id, materials[-1], edge_radius)
+            else:
+                self.contacts.add_partner(body, materials[-1], edge_radius)
+            self.partner_ids.append(body_id)
         self.materials = materials
+        self.rank = rank
         self.options = None
         self.options_key = None  # the key of the options the last step ran with (_follow)
         self.keeps_triangle_forces = False
@@ -125,8 +138,9 @@ def _current_state():
     revision = O.tags[_REVISION] if O.tags.has_key(_REVISION) else None
     if revision is None:
         return None
-    if _state is None or _state.revision != revision:
-        _state = _SceneState(revision)
+    rank = _mpi_rank()
+    if _state is None or _state.revision != revision or _state.rank != rank:
+        _state = _SceneState(revision, rank)
     return _state
 
 
@@ -217,7 +231,7 @@ def step(options=None, **legacy):
     keep = _keeps_triangle_forces()
     if keep != state.keeps_triangle_forces:
         state.contacts.keep_triangle_contacts = state.keeps_triangle_forces = keep
-    report = state.contacts.step(O)
+    report = state.contacts.step(O, state.rank)
     if "missing" in report:  # bodies erased from the scene leave the engine too
         _forget(report["missing"])
         step(options, **legacy)

@@ -1,8 +1,11 @@
 // The stages of a contact step that StopRulesTest does not cover (ContactStep.hpp): the time-step check (1), which
 // computes nothing above the limit and checks again when the time step or a mass changes, and the report of a kept
 // step (7): the energies summed over the pairs, the pairs that start deeper than a Hertz contact (first step only)
-// and the fastest body.
+// and the fastest body; and which pairs a process computes under YADE's MPI decomposition.
 #include <gtest/gtest.h>
+
+#include <tuple>
+#include <utility>
 
 #include "pkg/engine/ContactStep.hpp"
 #include "pkg/meshing/BodyMesh.hpp"
@@ -88,6 +91,48 @@ TEST(ContactStep, TheReportSumsTheEnergiesAndNamesDeepStartsOnce) {
   EXPECT_DOUBLE_EQ(moving.fastest.depth, kDeepestOverlap * scene.model.bodies[1].equivalentRadius);
   EXPECT_GT(moving.fastTimeStep, 0);
   EXPECT_LE(moving.fastTimeStep, 0.05 * scene.data.timeStep * (1 + 1e-12));
+}
+
+// Under YADE's MPI decomposition (ContactData::residences): a pair is computed where one side is this process's own
+// and neither is absent; its wrench applies to Own and Master bodies; a pair with another worker's body (an Image),
+// computed on both workers, gives each half its energy; the fastest body is among the process's own.
+TEST(ContactStep, AProcessComputesThePairsOfItsOwnBodiesOnly) {
+  auto stepAs = [](Residence body, Residence other) {
+    TwoBalls scene(1e-3);
+    scene.data.residences = {body, other};
+    scene.data.timeStep = 0.5 * scene.limit();
+    scene.data.bodyStates[0].velocity = Vector3r(0, 0, 0.01);
+    scene.data.bodyStates[1].velocity = Vector3r(0, 0, -0.1);  // the fastest, where it is reported
+    const StepReport report = contactStep(scene.model, scene.data);
+    EXPECT_TRUE(report.kept());
+    return std::make_tuple(scene.data.pairs.size(), report, scene.data);
+  };
+  const auto [wholePairs, whole, wholeData] = stepAs(Residence::Own, Residence::Own);  // one process
+  ASSERT_EQ(wholePairs, 1u);
+  ASSERT_GT(whole.energy.elastic, 0);
+  EXPECT_EQ(whole.fastest.body, 1);
+  const Wrench onBody = wholeData.bodyWrenches[0], onOther = wholeData.bodyWrenches[1];
+  const auto [ownImagePairs, ownImage, ownImageData] = stepAs(Residence::Own, Residence::Image);
+  ASSERT_EQ(ownImagePairs, 1u);
+  EXPECT_EQ(ownImageData.bodyWrenches[0].force, onBody.force);  // the same pair, the same operations
+  EXPECT_EQ(ownImageData.bodyWrenches[1].force, onOther.force);
+  EXPECT_TRUE(ownImageData.appliesWrench(0) && !ownImageData.appliesWrench(1));
+  EXPECT_EQ(ownImage.energy.elastic, 0.5 * whole.energy.elastic);
+  EXPECT_EQ(ownImage.fastest.body, 0);  // body 1 moves faster, but another process reports it
+
+  const auto [masterPairs, master, masterData] = stepAs(Residence::Master, Residence::Own);
+  ASSERT_EQ(masterPairs, 1u);
+  EXPECT_TRUE(masterData.appliesWrench(0) && masterData.appliesWrench(1));
+  EXPECT_EQ(master.energy.elastic, whole.energy.elastic);  // computed here alone
+  EXPECT_EQ(master.fastest.body, 1);
+
+  for (auto [body, other] : {std::pair{Residence::Image, Residence::Image}, std::pair{Residence::Own, Residence::Absent},
+                             std::pair{Residence::Master, Residence::Image}}) {
+    const auto [pairs, report, data] = stepAs(body, other);
+    EXPECT_EQ(pairs, 0u);
+    EXPECT_EQ(report.energy.elastic, 0);
+    EXPECT_TRUE(data.bodyWrenches[0].force.isZero(0) && data.bodyWrenches[1].force.isZero(0));
+  }
 }
 
 }  // namespace
