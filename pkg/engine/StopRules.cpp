@@ -134,7 +134,8 @@ FastBody fastestBody(const ContactModel& model, const ContactData& data, Real dt
   }
   // A sphere's turn does not move its surface toward anything.
   for (size_t p = 0; p < model.partners.size(); ++p)
-    if (model.partners[p].sphereBody && data.residences[bodyCount + p] == Residence::Own) consider(bodyCount + static_cast<int>(p), data.partnerStates[p].velocity.norm());
+    if (model.partners[p].sphereBody && data.residences[bodyCount + p] == Residence::Own)
+      consider(bodyCount + static_cast<int>(p), data.partnerStates[p].velocity.norm());
   return fastest;
 }
 

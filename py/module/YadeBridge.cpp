@@ -103,15 +103,14 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
   data.timeStep = bp::extract<Real>(omega.attr("dt"));
   const int bodyCount = static_cast<int>(model.bodies.size());
   // Not in the scene: missing in one process; under yade.mpy, in another process.
-  auto absent = [&](int index, int id) {
-    data.residences[index] = Residence::Absent;
+  auto absent = [&](int id) {
     if (rank < 0) missing.push_back(id);
   };
   for (int b = 0; b < bodyCount; ++b) {
     const bp::object body = bodyOrNone(bodies, model.bodies[b].id);
     data.residences[b] = body.is_none() ? Residence::Absent : residence(body, rank);
     if (data.residences[b] == Residence::Absent) {
-      absent(b, model.bodies[b].id);
+      absent(model.bodies[b].id);
       data.bodyMasses[b] = 0;  // puts no limit on the time step
       continue;
     }
@@ -126,7 +125,7 @@ std::vector<int> readScene(const bp::object& omega, ContactModel& model, Contact
     const int index = bodyCount + static_cast<int>(p);
     data.residences[index] = body.is_none() ? Residence::Absent : residence(body, rank);
     if (data.residences[index] == Residence::Absent) {
-      absent(index, partner.id);
+      absent(partner.id);
       data.partnerMasses[p] = 0;
       continue;
     }
