@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "bench/RecordedScene.hpp"
 #include "pkg/engine/PairEvaluation.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
 #include "pkg/meshing/BodyMesh.hpp"
@@ -204,31 +205,63 @@ TEST(FacetSurface, EveryPointOfAPanelHasExactlyOneOwner) {
     }
 }
 
-Wrench onSurface(const BodyMesh& mesh, const BodyState& body, const std::vector<Corners>& facets) {
+Wrench onSurface(const RoundedBody& body, const BodyState& state, const std::vector<Corners>& facets) {
   std::vector<Partner> partners;
   std::vector<BodyState> states;
   for (size_t f = 0; f < facets.size(); ++f) {
     partners.push_back({static_cast<int>(f), Facet{facets[f], nullptr}, kFloor});
     states.push_back(at(Vector3r::Zero()));
   }
-  return surfaceContact(roundedBody(0, mesh, kRubber), body, partners, states, EngineOptions()).onFirst;
+  return surfaceContact(body, state, partners, states, EngineOptions()).onFirst;
+}
+
+Wrench onWall(const RoundedBody& body, const BodyState& state) {
+  return partnerContact(body, state, Wall{2, 1}, at(Vector3r::Zero()), kFloor, EngineOptions()).onFirst;
+}
+
+// The square [-0.1, 0.1]^2 m of 32 facets, cells 0.05 m wide.
+std::vector<Corners> tiledFloor(unsigned seed) {
+  std::vector<Corners> facets = tiledSquare(4, seed);
+  for (Corners& c : facets)
+    for (Vector3r& x : c) x = 0.05 * x - Vector3r(0.1, 0.1, 0);
+  return facets;
 }
 
 TEST(FacetSurface, ABallAcrossSeamsMeetsThePlane) {
   // A 642-node ball 1 mm into a square of 32 facets, its contact over seams and vertices: the Wall's force and
   // torque to round-off (the panel computes the plane's contacts; 1e-12 of the force).
-  const BodyMesh ball(icosphere(0.025, 3));
-  std::vector<Corners> facets = tiledSquare(4, 11);
-  for (Corners& c : facets)
-    for (Vector3r& x : c) x = 0.05 * x - Vector3r(0.1, 0.1, 0);
+  const RoundedBody ball = roundedBody(0, BodyMesh(icosphere(0.025, 3)), kRubber);
+  const std::vector<Corners> facets = tiledFloor(11);
   for (const Vector3r& centre : {Vector3r(0, 0, 0.024), Vector3r(0.05, 0.0123, 0.0245), Vector3r(-0.05, 0.05, 0.024)}) {
     const BodyState body = at(centre, Quaternionr(Eigen::AngleAxis<Real>(0.4, Vector3r(1, 2, 3).normalized())));
-    const Wrench wall = partnerContact(roundedBody(0, ball, kRubber), body, Wall{2, 1}, at(Vector3r::Zero()), kFloor,
-                                       EngineOptions()).onFirst;
+    const Wrench wall = onWall(ball, body);
     ASSERT_GT(wall.force.z(), 0.05);
     const Wrench surface = onSurface(ball, body, facets);
     EXPECT_LT((surface.force - wall.force).norm(), 1e-12 * wall.force.norm()) << centre.transpose();
     EXPECT_LT((surface.torque - wall.torque).norm(), 1e-12 * wall.force.norm() * 0.025) << centre.transpose();
+  }
+}
+
+TEST(FacetSurface, AGummyBearAcrossSeamsMeetsThePlane) {
+  // S1's gummy bear (554 nodes, a body far from a ball) in 20 random orientations and places, pressed 2 mm (0.08 r_eq)
+  // into the square of 32 facets, its contacts over seams and vertices: the Wall's force and torque to round-off.
+  // Each of the panel's members culls the bear's triangle tree by the part of the panel it keeps (nodes by their
+  // boxes' projections, triangles by their boxes'): no contact the Wall finds is lost, none counted twice.
+  const RoundedBody bear = loadRecordedScene().model.bodies[0];
+  const std::vector<Corners> facets = tiledFloor(5);
+  std::mt19937 random(17);
+  std::normal_distribution<Real> normal;
+  std::uniform_real_distribution<Real> across(-0.05, 0.05);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Quaternionr orientation = Quaternionr(normal(random), normal(random), normal(random), normal(random)).normalized();
+    BodyState body = at(Vector3r(across(random), across(random), 0.08), orientation);
+    while (onWall(bear, body).force.z() == 0) body.position.z() -= 2.5e-4;  // first touch, within 0.25 mm
+    body.position.z() -= 0.002;
+    const Wrench wall = onWall(bear, body), surface = onSurface(bear, body, facets);
+    ASSERT_GT(wall.force.z(), 0.01) << "trial " << trial;
+    EXPECT_LT((surface.force - wall.force).norm(), 1e-12 * wall.force.norm()) << "trial " << trial;
+    EXPECT_LT((surface.torque - wall.torque).norm(), 1e-12 * wall.force.norm() * bear.mesh->sphereBoundRadius())
+        << "trial " << trial;
   }
 }
 
@@ -243,9 +276,9 @@ TEST(FacetSurface, AnAlmostFlatConcaveSeamPushesAsThePlane) {
       {Vector3r(0, -0.2, 0), Vector3r(0, 0.2, 0), Vector3r(-0.2, 0, 0.2 * rise)},
       {Vector3r(0, -0.2, 0), Vector3r(0, 0.2, 0), Vector3r(0.2, 0, 0.2 * rise)}};
   const BodyState body = at(Vector3r(0.001, 0, 0.024), Quaternionr(Eigen::AngleAxis<Real>(0.4, Vector3r(1, 2, 3).normalized())));
-  const Wrench wall = partnerContact(roundedBody(0, ball, kRubber), body, Wall{2, 1}, at(Vector3r::Zero()), kFloor,
-                                     EngineOptions()).onFirst;
-  const Wrench seam = onSurface(ball, body, facets);
+  const RoundedBody rounded = roundedBody(0, ball, kRubber);
+  const Wrench wall = onWall(rounded, body);
+  const Wrench seam = onSurface(rounded, body, facets);
   EXPECT_NEAR(seam.force.z(), wall.force.z(), 0.01 * wall.force.z());
 }
 

@@ -98,10 +98,28 @@ def test_the_choice_builds_its_mesh():
     assert abs(len(mesh.vertices) - choice.nodes) <= 0.02 * choice.nodes
 
 
+def _same_table(shipped, computed, where="table"):
+    """Equal structure, names and counts; the fitted numbers equal to 1e-9 relative. The fits are least squares through
+    numpy's LAPACK, whose kernels differ between processors (AVX2, AVX-512) in the last bits: 2e-15 relative seen on
+    the cost fits' slopes. A table out of date with the study's data differs in the leading digits."""
+    if isinstance(shipped, dict):
+        assert isinstance(computed, dict) and shipped.keys() == computed.keys(), where
+        for key in shipped:
+            _same_table(shipped[key], computed[key], f"{where}[{key!r}]")
+    elif isinstance(shipped, list):
+        assert isinstance(computed, list) and len(shipped) == len(computed), where
+        for k, (a, b) in enumerate(zip(shipped, computed)):
+            _same_table(a, b, f"{where}[{k}]")
+    elif isinstance(shipped, float):
+        assert computed == pytest.approx(shipped, rel=1e-9, abs=1e-300), where
+    else:
+        assert shipped == computed, where
+
+
 def test_the_table_is_what_the_study_data_gives():
     # py/roundedmesh/model_table.json, which the library reads, is roundedmesh_study.model_table's table of the
     # study's speed_vs_error.json: rewrite it with write_model_table() after the study's data changes
-    assert model_choice.model_table() == model_table.model_table()
+    _same_table(model_choice.model_table(), model_table.model_table())
 
 
 @pytest.mark.parametrize("shape, nodes, curvature", [("sphere", 162, "prescribed"), ("pear", 150, "computed"),
