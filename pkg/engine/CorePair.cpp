@@ -103,7 +103,8 @@ void againstFacet(const PlacedCore& core, const Facet& facet, const BodyState& b
   // A core sphere at least its radius in front of the plane is at least that far from every point of the facet: a
   // body resting on it (the core lies inset below its surface) is done here.
   bool reaches = false;
-  for (int i = 0; i < core.count && !reaches; ++i) reaches = towardBody.dot(core.centres[i] - corners[0]) < core.radii[i];
+  for (int i = 0; i < core.count && !reaches; ++i)
+    reaches = towardBody.dot(core.centres[i] - corners[0]) < core.radii[i];
   if (!reaches) return;
   const Vector3r t1 = normal.unitOrthogonal(), t2 = normal.cross(t1);  // (t1, t2, normal) right-handed
   auto inPlane = [&](const Vector3r& x) { return Vector2r((x - corners[0]).dot(t1), (x - corners[0]).dot(t2)); };

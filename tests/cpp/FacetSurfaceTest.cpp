@@ -253,7 +253,8 @@ TEST(FacetSurface, AGummyBearAcrossSeamsMeetsThePlane) {
   std::normal_distribution<Real> normal;
   std::uniform_real_distribution<Real> across(-0.05, 0.05);
   for (int trial = 0; trial < 20; ++trial) {
-    const Quaternionr orientation = Quaternionr(normal(random), normal(random), normal(random), normal(random)).normalized();
+    const Quaternionr orientation =
+        Quaternionr(normal(random), normal(random), normal(random), normal(random)).normalized();
     BodyState body = at(Vector3r(across(random), across(random), 0.08), orientation);
     while (onWall(bear, body).force.z() == 0) body.position.z() -= 2.5e-4;  // first touch, within 0.25 mm
     body.position.z() -= 0.002;
