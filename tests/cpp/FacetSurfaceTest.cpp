@@ -245,8 +245,8 @@ TEST(FacetSurface, ABallAcrossSeamsMeetsThePlane) {
 TEST(FacetSurface, AGummyBearAcrossSeamsMeetsThePlane) {
   // S1's gummy bear (554 nodes, a body far from a ball) in 20 random orientations and places, pressed 2 mm (0.08 r_eq)
   // into the square of 32 facets, its contacts over seams and vertices: the Wall's force and torque to round-off.
-  // Each of the panel's members culls the bear's triangle tree by the part of the panel it keeps (nodes by their
-  // boxes' projections, triangles by their boxes'): no contact the Wall finds is lost, none counted twice.
+  // Each of the panel's members culls the bear's triangle tree by the part of the panel it keeps (a triangle by its
+  // box's projection): no contact the Wall finds is lost, none counted twice.
   const RoundedBody bear = loadRecordedScene().model.bodies[0];
   const std::vector<Corners> facets = tiledFloor(5);
   std::mt19937 random(17);
