@@ -95,6 +95,10 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFac
   std::vector<Vector2r> outlineCorners;
   std::vector<bool> open;
   std::vector<Real> inset, slack;
+  outlineCorners.reserve(n);
+  open.reserve(n);
+  inset.reserve(n);
+  slack.reserve(n);
   for (int k = 0; k < n; ++k) {
     outlineCorners.push_back(faceCoordinates(face, facet.outline[k]));
     open.push_back(!weld->outlineClosed[k][side]);

@@ -16,6 +16,7 @@ FaceOutline::FaceOutline(std::vector<Vector2r> corners_, std::vector<bool> open_
                          std::vector<Real> slack_)
     : corners(std::move(corners_)), open(std::move(open_)), inset(std::move(inset_)), slack(std::move(slack_)) {
   const int n = static_cast<int>(corners.size());
+  lines.reserve(n);
   for (int i = 0; i < n; ++i) {
     const Vector2r along = (corners[(i + 1) % n] - corners[i]).normalized(), inward(-along.y(), along.x());
     const Vector2r shift = (inset.empty() ? 0 : inset[i]) * inward;

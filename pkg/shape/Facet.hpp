@@ -50,6 +50,8 @@ inline PlacedFacet placeFacet(const Facet& facet, const Matrix3r& rotation, cons
   for (int i = 0; i < 3; ++i) placed.corners[i] = place(facet.vertices[i]);
   if (facet.weld) {
     placed.weld = facet.weld.get();
+    placed.outline.reserve(facet.weld->outline.size());
+    placed.outlineBeyond.reserve(facet.weld->outlineBeyond.size());
     for (const Vector3r& x : facet.weld->outline) placed.outline.push_back(place(x));
     for (const Vector3r& x : facet.weld->outlineBeyond) placed.outlineBeyond.push_back(place(x));
     for (int i = 0; i < 3; ++i) placed.beyond[i] = place(facet.weld->beyond[i]);
