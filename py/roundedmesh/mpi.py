@@ -221,7 +221,9 @@ def mpirun(nSteps, withMerge=False):
     try:
         mpy.mpirun(nSteps, withMerge=False)
     except Exception as error:  # the other processes would wait for this one forever
-        print(f"roundedmesh.mpi: rank {mpy.rank}: {_cause(error)}", file=sys.__stderr__, flush=True)
+        # One write per line: print's separate write of the newline lets another process's output in between.
+        sys.__stderr__.write(f"roundedmesh.mpi: rank {mpy.rank}: {_cause(error)}\n")
+        sys.__stderr__.flush()
         mpy.comm.Abort(1)
     parts = summary(mpy, O.iter - first, time.time() - start, _collisions - collisions)
     if withMerge:
