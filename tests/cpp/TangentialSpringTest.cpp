@@ -335,7 +335,8 @@ TEST(TangentialSpringInEngine, StabilityLimitHasTheTangentialContact) {
 // heavily overdamped spring.
 TEST(TangentialSpringInEngine, LeapFrogLimitIsTheSpectralLimit) {
   const Real m = 0.02;
-  for (auto [k, c] : {std::pair<Real, Real>{0, 100}, {5000, 0}, {5000, 10}, {5000, 100}, {5000, 1000}}) {
+  for (const auto& spring : {std::pair<Real, Real>{0, 100}, {5000, 0}, {5000, 10}, {5000, 100}, {5000, 1000}}) {
+    const Real k = spring.first, c = spring.second;  // not a structured binding: C++17 does not let a lambda capture one
     const Real dtCrit = leapFrogLimit(m, k, c);
     auto spectralRadius = [&](Real dt) {
       Eigen::Matrix2d step;  // (v_{n-1/2}, x_n) -> (v_{n+1/2}, x_{n+1})
