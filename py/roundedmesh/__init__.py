@@ -28,15 +28,15 @@ from .contact import body_contact, partner_contact, plane_contact, sphere_contac
 from .model_choice import cheapest_model
 from .scene import _restore_mesh  # noqa: F401  (Mesh.__reduce__ names it as roundedmesh._restore_mesh)
 from .scene import (add_body, add_sphere, assign_material, contacts, critical_timestep, engine,
-                    keep_triangle_forces, rounded_bodies, set_edge_radius, set_material, sphere_bodies, statistics,
-                    triangle_forces, unbalanced_force)
+                    keep_triangle_forces, rounded_bodies, set_edge_radius, set_material, set_velocity, sphere_bodies,
+                    statistics, triangle_forces, unbalanced_force)
 from .shapes import reference_shape
 
 Mesh.load = staticmethod(meshfiles.load)
 Mesh.reference_shape = staticmethod(reference_shape)
 
 __all__ = ["Mesh", "HertzMaterial", "EngineOptions", "add_body", "add_sphere", "assign_material", "set_material",
-           "set_edge_radius", "engine",
+           "set_edge_radius", "set_velocity", "engine",
            "critical_timestep", "statistics", "rounded_bodies", "sphere_bodies", "plane_contact", "partner_contact", "body_contact",
            "sphere_contact", "triangle_contacts", "contacts", "unbalanced_force", "keep_triangle_forces",
            "triangle_forces", "cheapest_model"]

@@ -176,6 +176,26 @@ def add_body(mesh, pos, ori=Quaternion.Identity, material=None, error=None):
 _placed = {"revision": None, "meshes": {}}
 
 
+def set_velocity(body_id, vel=None, angVel=None):
+    """Sets a body's velocity `vel` [m/s] and angular velocity `angVel` [rad/s], both in the global frame; None leaves
+    it as it is. Any body of the scene that moves on its own: rounded, sphere, clump or YADE's. YADE moves an
+    aspherical body (a rounded body, a clump) by its angular momentum and recomputes the angular velocity from it each
+    step, so a spin set through state.angVel alone is lost on the first step: this sets the angular momentum with it,
+    L = R diag(I) R^T angVel (R the body's orientation, I its principal inertia). On bad input nothing changes."""
+    body = _existing_body(body_id, "body_id")
+    if body.isClumpMember:
+        raise ValueError(f"body_id: body {body_id} is a member of clump {body.clumpId}, which moves it: set the clump's")
+    vel = None if vel is None else _finite_vector(vel, "vel")
+    angVel = None if angVel is None else _finite_vector(angVel, "angVel")
+    state = body.state
+    if vel is not None:
+        state.vel = vel
+    if angVel is not None:
+        local = state.ori.conjugate() * angVel
+        state.angVel = angVel
+        state.angMom = state.ori * Vector3(*(state.inertia[k] * local[k] for k in range(3)))
+
+
 def _rounded_body_meshes():
     """{body id: mesh key} of the current scene's rounded bodies."""
     if _placed["revision"] is None or _placed["revision"] != _tag("revision"):

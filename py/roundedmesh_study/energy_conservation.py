@@ -351,14 +351,6 @@ def kinetic_energy(body_ids):
     return total
 
 
-def set_spin(body_id, omega):
-    """Angular velocity [rad/s, global]; YADE moves an aspherical body by its angular momentum, set with it."""
-    s = O.bodies[body_id].state
-    local = s.ori.conjugate() * Vector3(*omega)
-    s.angVel = Vector3(*omega)
-    s.angMom = s.ori * Vector3(*[s.inertia[k] * local[k] for k in range(3)])
-
-
 _trace = []
 
 
@@ -387,7 +379,7 @@ def collide(pair, kind, depth, fraction, seed):
         side = np.cross(u, random_unit(rng))
         relative = relative + 0.5 * speed * side / np.linalg.norm(side)
         for i in ids:
-            set_spin(i, 0.5 * speed / R_EQ * random_unit(rng))
+            rm.set_velocity(i, angVel=0.5 * speed / R_EQ * random_unit(rng))
     O.bodies[ids[0]].state.vel = Vector3(*(-relative * m2 / (m1 + m2)))
     O.bodies[ids[1]].state.vel = Vector3(*(relative * m1 / (m1 + m2)))
     O.engines = [ForceResetter(), rm.engine(**CONTACT_OPTIONS), NewtonIntegrator(damping=0, gravity=(0, 0, 0)),

@@ -282,8 +282,9 @@ def build_spheres(poses):
     for pose in poses:
         position, ori, velocity, angular = _pose(pose)
         body = utils.sphere(position, RADIUS, material=particle)
-        body.state.ori, body.state.vel, body.state.angVel = ori, velocity, angular
+        body.state.ori = ori
         ids.append(O.bodies.append(body))
+        scene.set_velocity(ids[-1], velocity, angular)
     _set_engines([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()], [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
                  particle, box)
     return ids
@@ -305,7 +306,7 @@ def build_rounded(poses, name="gummy_bear", nodes=None, **engine_options):
     for pose in poses:
         position, ori, velocity, angular = _pose(pose)
         body = scene.add_body(mesh, position + ori * Vector3(*shift), ori * turn, particle)
-        O.bodies[body].state.vel, O.bodies[body].state.angVel = velocity, angular
+        scene.set_velocity(body, velocity, angular)
         ids.append(body)
     for wall in (utils.wall(0, axis=2, sense=1), utils.wall(-HALF_BASE, axis=0, sense=1),
                  utils.wall(HALF_BASE, axis=0, sense=-1), utils.wall(-HALF_BASE, axis=1, sense=1),
@@ -353,9 +354,7 @@ def build_clumps(poses, count=40, name="gummy_bear", discretization=30, method=N
     for pose in poses:
         position, ori, velocity, angular = _pose(pose)
         clump, _ = add_clump(centres, radii, position, ori, particle, mass, discretization)
-        state = O.bodies[clump].state
-        state.vel = velocity + angular.cross(state.pos - position)
-        state.angVel = angular
+        scene.set_velocity(clump, velocity + angular.cross(O.bodies[clump].state.pos - position), angular)
         ids.append(clump)
     _set_engines([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()], [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
                  particle, box)
@@ -442,7 +441,7 @@ def build_level_sets(poses, name="gummy_bear", spacing=1e-3, surface_nodes=511, 
         position, ori, velocity, angular = _pose(pose)
         body = add_level_set_body(shape, position, ori, particle, density * mesh.volume,
                                   density * np.array(mesh.inertia))
-        O.bodies[body].state.vel, O.bodies[body].state.angVel = velocity, angular
+        scene.set_velocity(body, velocity, angular)
         ids.append(body)
     _set_engines([Bo1_LevelSet_Aabb(), Bo1_Wall_Aabb()], [Ig2_LevelSet_LevelSet_ScGeom(), Ig2_Wall_LevelSet_ScGeom()],
                  particle, box, verlet_distance)
