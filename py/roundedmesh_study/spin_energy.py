@@ -1,0 +1,130 @@
+"""Where does a settled packing's spin come from? Issue 41, item 1: an analysis, the model is not changed.
+
+The spheroid's settled S1 packing (bench/data/s1_settled_spheroid.csv) holds 38 bodies spinning faster than 10 rad/s
+about their long axes, up to 478 rad/s. This restarts it (peers.build_rounded: S1's box, materials and engine, each
+body at its recorded pose, velocity and spin) under a set of cases that each change one thing, and follows the
+bodies' kinetic energy for `--time` seconds of simulated time:
+
+    default            the engine's defaults (the paper's normal law, Eq. 7's damping A = 0.01 s), dt = 1e-4 s
+    dt/4               the same at dt = 2.5e-5 s: what changes with the step is the integration's
+    undamped           A = 0: the elastic pressure alone
+    energy             normal='energy', the exact gradient of one energy, damped
+    energy, undamped   normal='energy', A = 0: no term but the facing test's cuts may do work
+    ... at rest        the same, every spin set to zero first
+
+Rotational energy per body: sum over principal axes of I_k w_k^2 / 2, w in the principal frame; "axial" is the part
+about the axis of least inertia (a prolate spheroid's long axis). Gravity's work and the elastic energy are of the
+order of the packing's weight times its overlaps (mJ): a gain of joules in the spin is work the contacts do.
+
+    /usr/bin/python3 scripts/validation/spin_energy.py [--shape spheroid] [--poses CSV] [--time 0.125]
+        [--cases default dt/4 undamped energy "energy, undamped"] [--output out/spin_energy]
+
+Writes spin_energy.csv (case, t [s], translational, rotational and axial rotational energy [J], the fastest spin
+[rad/s]) and spin_energy.png (rotational energy against time, per case).
+"""
+import argparse
+import csv
+import os
+import shlex
+import time
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from yade import O  # noqa: E402
+
+import roundedmesh as rm  # noqa: E402
+
+from . import peers  # noqa: E402
+from .benchmarking import machine  # noqa: E402
+from .bench_s1_peers import default_poses, read_poses  # noqa: E402
+
+TIME_STEP = peers.TIME_STEP  # S1's [s]
+CASES = {
+    "default": {},
+    "dt/4": {"dt": TIME_STEP / 4},
+    "undamped": {"damping": 0.0},
+    "energy": {"normal": "energy"},
+    "energy, undamped": {"normal": "energy", "damping": 0.0},
+}
+CASES.update({f"{name}, at rest": {**case, "at_rest": True} for name, case in list(CASES.items())})
+SAMPLES = 10  # per run, besides its start
+COLUMNS = ["case", "t_s", "translational_J", "rotational_J", "axial_rotational_J", "fastest_spin_rad_s"]
+
+
+def kinetic_energies(ids):
+    """(translational, rotational, rotational about each body's axis of least inertia [J], fastest spin [rad/s])."""
+    translational = rotational = axial = fastest = 0.0
+    for i in ids:
+        state = O.bodies[i].state
+        inertia = np.array(state.inertia)
+        spin = np.array(state.ori.conjugate() * state.angVel)  # in the principal frame
+        parts = 0.5 * inertia * spin ** 2
+        translational += 0.5 * state.mass * state.vel.squaredNorm()
+        rotational += parts.sum()
+        axial += parts[np.argmin(inertia)]
+        fastest = max(fastest, state.angVel.norm())
+    return translational, rotational, axial, fastest
+
+
+def run_case(name, poses, shape, duration, normal="pressure", dt=TIME_STEP, damping=None, at_rest=False):
+    """Rows (COLUMNS) of one case: S1 rebuilt at `poses`, run for `duration` [s] at `dt` [s]."""
+    if at_rest:
+        poses = [(position, ori, velocity, (0.0, 0.0, 0.0)) for position, ori, velocity, _ in poses]
+    ids = peers.build_rounded(poses, shape, normal=normal)
+    if damping is not None:
+        for i in ids:
+            rm.set_material(i, rm.HertzMaterial(damping=damping, **peers.PARTICLE))
+    O.dt = dt
+    steps = int(round(duration / dt))
+    rows = [[name, O.time, *kinetic_energies(ids)]]
+    progress = rm.progress.Progress(steps, name)
+    for k in range(1, SAMPLES + 1):
+        O.run(steps * k // SAMPLES - O.iter, True)
+        rows.append([name, O.time, *kinetic_energies(ids)])
+        progress.update(O.iter)
+    return rows
+
+
+def plot(rows, path):
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for name in dict.fromkeys(r[0] for r in rows):
+        mine = [r for r in rows if r[0] == name]
+        ax.plot([r[1] for r in mine], [r[3] for r in mine], marker="o", ms=3, label=name)
+    ax.set_xlabel("simulated time [s]")
+    ax.set_ylabel("rotational kinetic energy [J]")
+    ax.set_title("settled packing restarted: rotational energy per case")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--shape", default="spheroid")
+    parser.add_argument("--poses", help="settled packing (CSV; default bench/data's of the shape)")
+    parser.add_argument("--time", type=float, default=0.125, help="simulated time per case [s]")
+    parser.add_argument("--cases", nargs="+", default=list(CASES), choices=list(CASES))
+    parser.add_argument("--output", default=os.path.join("out", "spin_energy"))
+    args = parser.parse_args(argv)
+    os.makedirs(args.output, exist_ok=True)
+    poses = read_poses(args.poses or default_poses(args.shape), args.shape)
+    print(f"# {machine()}\n# /usr/bin/python3 scripts/validation/spin_energy.py {shlex.join(argv)}", flush=True)
+    rows, start = [], time.perf_counter()
+    for name in args.cases:
+        rows += run_case(name, poses, args.shape, args.time, **CASES[name])
+        first, last = next(r for r in rows if r[0] == name), rows[-1]
+        gain = last[3] - first[3]
+        print(f"{name}: rotational {first[3]:.4g} -> {last[3]:.4g} J ({gain:+.3g} J, {gain / args.time:+.3g} W; "
+              f"about the long axes {last[4] - first[4]:+.3g} J), translational {first[2]:.3g} -> {last[2]:.3g} J, "
+              f"fastest spin {first[5]:.1f} -> {last[5]:.1f} rad/s", flush=True)
+    with open(os.path.join(args.output, "spin_energy.csv"), "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(COLUMNS)
+        writer.writerows(rows)
+    plot(rows, os.path.join(args.output, "spin_energy.png"))
+    print(f"wrote {args.output}/spin_energy.csv and spin_energy.png ({time.perf_counter() - start:.0f} s)")
