@@ -12,14 +12,22 @@ bodies' kinetic energy for `--time` seconds of simulated time:
     energy, undamped   normal='energy', A = 0: no term but the facing test's cuts may do work
     ... at rest        the same, every spin set to zero first
 
+With --pair, the same question on one contact: two of the shape's bodies, long axes crossed or parallel, pressed
+`--overlap` into each other, no gravity; body 2 held, body 1 held in place and turning only about its long axis, which
+spins at `--spin`; under each of the normal laws with and without damping, and at dt/4. A surface of revolution
+turning about its axis moves along itself: a contact that is the gradient of an energy and a damping that
+dissipates leave the spin as it is or slow it.
+
 Rotational energy per body: sum over principal axes of I_k w_k^2 / 2, w in the principal frame; "axial" is the part
 about the axis of least inertia (a prolate spheroid's long axis). Gravity's work and the elastic energy are of the
 order of the packing's weight times its overlaps (mJ): a gain of joules in the spin is work the contacts do.
 
     /usr/bin/python3 scripts/validation/spin_energy.py [--shape spheroid] [--poses CSV] [--time 0.125]
         [--cases default dt/4 undamped energy "energy, undamped"] [--output out/spin_energy]
+    /usr/bin/python3 scripts/validation/spin_energy.py --pair [--spin 400] [--overlap 0.5e-3] [--time 0.1]
 
-Writes spin_energy.csv (case, t [s], translational, rotational and axial rotational energy [J], the fastest spin
+With --pair it writes spin_pair.csv (law, damping A [s], axes, dt [s], spin [rad/s], rotational energy at the start
+and the end [J], its mean rate of change [W]). Else it writes spin_energy.csv (case, t [s], translational, rotational and axial rotational energy [J], the fastest spin
 [rad/s]) and spin_energy.png (rotational energy against time, per case).
 """
 import argparse
@@ -33,7 +41,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from yade import O  # noqa: E402
+from yade import ForceResetter, NewtonIntegrator, O  # noqa: E402
+from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 
 import roundedmesh as rm  # noqa: E402
 
@@ -88,6 +97,48 @@ def run_case(name, poses, shape, duration, normal="pressure", dt=TIME_STEP, damp
     return rows
 
 
+def principal_axis_along(mesh, axis, direction):
+    """The orientation that turns principal axis `axis` of `mesh`'s frame onto the unit vector `direction`."""
+    turn = Quaternion()
+    turn.setFromTwoVectors(Vector3(*np.eye(3)[axis]), Vector3(*direction))
+    return turn
+
+
+def spinning_pair(shape, normal, damping, spin, crossed, overlap, duration, dt=TIME_STEP):
+    """(rotational energy of body 1 at the start, at the end [J]) of --pair's contact (module docstring)."""
+    O.reset()
+    mesh = peers.body_frame(shape)[0]
+    material = rm.HertzMaterial(damping=damping, **peers.PARTICLE)
+    long_axis = int(np.argmin(np.array(mesh.inertia)))
+    half_width = np.ptp(np.array(mesh.vertices)[:, (long_axis + 1) % 3]) / 2  # across the long axis [m]
+    first = rm.add_body(mesh, (0, 0, 0), principal_axis_along(mesh, long_axis, (1, 0, 0)), material)
+    second = rm.add_body(mesh, (0, 0, 2 * half_width - overlap),
+                         principal_axis_along(mesh, long_axis, (0, 1, 0) if crossed else (1, 0, 0)), material)
+    O.bodies[first].state.blockedDOFs = "xyzYZ"
+    O.bodies[second].state.blockedDOFs = "xyzXYZ"
+    O.engines = [ForceResetter(), rm.engine(normal=normal), NewtonIntegrator(damping=0, gravity=(0, 0, 0))]
+    O.dt = dt
+    rm.set_velocity(first, angVel=(spin, 0, 0))
+    start = kinetic_energies([first])[1]
+    O.run(int(round(duration / dt)), True)
+    return start, kinetic_energies([first])[1]
+
+
+def pair_cases(args):
+    """Rows of spin_pair.csv: both laws with and without damping for crossed and parallel axes, then dt/4."""
+    damping = peers.DAMPING_CONSTANT
+    cases = [(normal, a, crossed, TIME_STEP) for crossed in (True, False) for normal in ("pressure", "energy")
+             for a in (damping, 0.0)] + [("pressure", damping, True, TIME_STEP / 4)]
+    rows = []
+    for normal, a, crossed, dt in cases:
+        start, end = spinning_pair(args.shape, normal, a, args.spin, crossed, args.overlap, args.time, dt)
+        rows.append([normal, a, "crossed" if crossed else "parallel", dt, args.spin, start, end,
+                     (end - start) / args.time])
+        print(f"{normal}, A = {a:g} s, {rows[-1][2]}, dt = {dt:g} s: {start:.5g} -> {end:.5g} J "
+              f"({rows[-1][-1]:+.3g} W)", flush=True)
+    return rows
+
+
 def plot(rows, path):
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for name in dict.fromkeys(r[0] for r in rows):
@@ -108,12 +159,22 @@ def main(argv):
     parser.add_argument("--shape", default="spheroid")
     parser.add_argument("--poses", help="settled packing (CSV; default bench/data's of the shape)")
     parser.add_argument("--time", type=float, default=0.125, help="simulated time per case [s]")
+    parser.add_argument("--pair", action="store_true", help="one contact of two bodies, one spinning (docstring)")
+    parser.add_argument("--spin", type=float, default=400.0, help="--pair: body 1's spin [rad/s]")
+    parser.add_argument("--overlap", type=float, default=0.5e-3, help="--pair: the bodies' overlap [m]")
     parser.add_argument("--cases", nargs="+", default=list(CASES), choices=list(CASES))
     parser.add_argument("--output", default=os.path.join("out", "spin_energy"))
     args = parser.parse_args(argv)
     os.makedirs(args.output, exist_ok=True)
-    poses = read_poses(args.poses or default_poses(args.shape), args.shape)
     print(f"# {machine()}\n# /usr/bin/python3 scripts/validation/spin_energy.py {shlex.join(argv)}", flush=True)
+    if args.pair:
+        with open(os.path.join(args.output, "spin_pair.csv"), "w", newline="") as f:
+            writer = csv.writer(f)
+            writer.writerow(["normal", "damping_s", "axes", "dt_s", "spin_rad_s", "start_J", "end_J", "rate_W"])
+            writer.writerows(pair_cases(args))
+        print(f"wrote {args.output}/spin_pair.csv")
+        return
+    poses = read_poses(args.poses or default_poses(args.shape), args.shape)
     rows, start = [], time.perf_counter()
     for name in args.cases:
         rows += run_case(name, poses, args.shape, args.time, **CASES[name])
