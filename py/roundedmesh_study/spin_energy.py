@@ -140,15 +140,18 @@ def pair_cases(args):
 
 
 def plot(rows, path):
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    for name in dict.fromkeys(r[0] for r in rows):
-        mine = [r for r in rows if r[0] == name]
-        ax.plot([r[1] for r in mine], [r[3] for r in mine], marker="o", ms=3, label=name)
-    ax.set_xlabel("simulated time [s]")
-    ax.set_ylabel("rotational kinetic energy [J]")
-    ax.set_title("settled packing restarted: rotational energy per case")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    """Rotational energy against time: the cases restarted with their spins (left, J) and at rest (right, mJ)."""
+    names = list(dict.fromkeys(r[0] for r in rows))
+    panels = [(n for n in names if not n.endswith("at rest")), (n for n in names if n.endswith("at rest"))]
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    for ax, chosen, scale, title in zip(axes, panels, (1.0, 1e3), ("with the packing's spins [J]", "spins set to zero [mJ]")):
+        for name in chosen:
+            mine = [r for r in rows if r[0] == name]
+            ax.plot([r[1] for r in mine], [scale * r[3] for r in mine], marker="o", ms=3, label=name)
+        ax.set_xlabel("simulated time [s]")
+        ax.set_title(f"rotational kinetic energy, {title}", fontsize=10)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
