@@ -341,14 +341,26 @@ def run_loops(output, quick):
 
 # --- collisions in YADE --------------------------------------------------------------------------------------
 
-def kinetic_energy(body_ids):
-    """Translational plus rotational kinetic energy [J], the rotation with the principal inertia."""
-    total = 0.0
+def kinetic_energies(body_ids):
+    """(translational, rotational, rotational about each body's axis of least inertia [J], fastest spin [rad/s]) of
+    the bodies, the rotation with the principal inertia."""
+    translational = rotational = axial = fastest = 0.0
     for i in body_ids:
-        s = O.bodies[i].state
-        w = s.ori.conjugate() * s.angVel
-        total += 0.5 * s.mass * s.vel.squaredNorm() + 0.5 * sum(s.inertia[k] * w[k] ** 2 for k in range(3))
-    return total
+        state = O.bodies[i].state
+        inertia = np.array(state.inertia)
+        spin = np.array(state.ori.conjugate() * state.angVel)  # in the principal frame
+        parts = 0.5 * inertia * spin ** 2
+        translational += 0.5 * state.mass * state.vel.squaredNorm()
+        rotational += parts.sum()
+        axial += parts[np.argmin(inertia)]
+        fastest = max(fastest, state.angVel.norm())
+    return translational, rotational, axial, fastest
+
+
+def kinetic_energy(body_ids):
+    """Translational plus rotational kinetic energy [J]."""
+    translational, rotational, _, _ = kinetic_energies(body_ids)
+    return translational + rotational
 
 
 _trace = []

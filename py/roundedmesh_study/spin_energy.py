@@ -27,8 +27,9 @@ order of the packing's weight times its overlaps (mJ): a gain of joules in the s
     /usr/bin/python3 scripts/validation/spin_energy.py --pair [--spin 400] [--overlap 0.5e-3] [--time 0.1]
 
 With --pair it writes spin_pair.csv (law, damping A [s], axes, dt [s], spin [rad/s], rotational energy at the start
-and the end [J], its mean rate of change [W]). Else it writes spin_energy.csv (case, t [s], translational, rotational and axial rotational energy [J], the fastest spin
-[rad/s]) and spin_energy.png (rotational energy against time, per case).
+and the end [J], its mean rate of change [W]). Else it writes spin_energy.csv (case, t [s], translational,
+rotational and axial rotational energy [J], the fastest spin [rad/s]) and spin_energy.png (rotational energy against
+time: the cases with the packing's spins and those at rest).
 """
 import argparse
 import csv
@@ -48,6 +49,7 @@ import roundedmesh as rm  # noqa: E402
 
 from . import peers  # noqa: E402
 from .benchmarking import machine  # noqa: E402
+from .energy_conservation import kinetic_energies  # noqa: E402
 from .bench_s1_peers import default_poses, read_poses  # noqa: E402
 
 TIME_STEP = peers.TIME_STEP  # S1's [s]
@@ -61,21 +63,6 @@ CASES = {
 CASES.update({f"{name}, at rest": {**case, "at_rest": True} for name, case in list(CASES.items())})
 SAMPLES = 10  # per run, besides its start
 COLUMNS = ["case", "t_s", "translational_J", "rotational_J", "axial_rotational_J", "fastest_spin_rad_s"]
-
-
-def kinetic_energies(ids):
-    """(translational, rotational, rotational about each body's axis of least inertia [J], fastest spin [rad/s])."""
-    translational = rotational = axial = fastest = 0.0
-    for i in ids:
-        state = O.bodies[i].state
-        inertia = np.array(state.inertia)
-        spin = np.array(state.ori.conjugate() * state.angVel)  # in the principal frame
-        parts = 0.5 * inertia * spin ** 2
-        translational += 0.5 * state.mass * state.vel.squaredNorm()
-        rotational += parts.sum()
-        axial += parts[np.argmin(inertia)]
-        fastest = max(fastest, state.angVel.norm())
-    return translational, rotational, axial, fastest
 
 
 def run_case(name, poses, shape, duration, normal="pressure", dt=TIME_STEP, damping=None, at_rest=False):
@@ -144,7 +131,8 @@ def plot(rows, path):
     names = list(dict.fromkeys(r[0] for r in rows))
     panels = [(n for n in names if not n.endswith("at rest")), (n for n in names if n.endswith("at rest"))]
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
-    for ax, chosen, scale, title in zip(axes, panels, (1.0, 1e3), ("with the packing's spins [J]", "spins set to zero [mJ]")):
+    titles = ("with the packing's spins [J]", "spins set to zero [mJ]")
+    for ax, chosen, scale, title in zip(axes, panels, (1.0, 1e3), titles):
         for name in chosen:
             mine = [r for r in rows if r[0] == name]
             ax.plot([r[1] for r in mine], [scale * r[3] for r in mine], marker="o", ms=3, label=name)
