@@ -57,6 +57,11 @@ def test_set_velocity_keeps_a_spin_that_yade_would_drop():
             rm.set_velocity(body, **bad)
     with pytest.raises(ValueError, match="no body 99"):
         rm.set_velocity(99, vel=(0, 0, 0))
+    members = [O.bodies.append(utils.sphere(centre, 0.01)) for centre in ((5, 0, 0), (5.02, 0, 0))]
+    clump = O.bodies.clump(members)
+    with pytest.raises(ValueError, match=f"member of clump {clump}"):
+        rm.set_velocity(members[0], vel=(1, 0, 0))
+    assert O.bodies[members[0]].state.vel == Vector3(0, 0, 0)
     assert np.array(state.angVel) == pytest.approx(omega, abs=0) and np.array(state.vel) == pytest.approx(vel, abs=0)
     O.run(1000, True)
     assert np.array(O.bodies[dropped].state.angVel) == pytest.approx(0, abs=1e-12)
