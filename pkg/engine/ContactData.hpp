@@ -96,7 +96,8 @@ struct PairSummary {
   bool sliding = false;                // the pair's spring slides, or (viscous law) any triangle contact (Eq. 21)
   Real elasticEnergy = 0;              // sum of the triangle contacts' elastic energies (NormalLoad), and the
                                        // energy of the pair's tangential spring [J]
-  Real dampingPower = 0;               // sum of (Fn - F_elastic) ddelta_s/dt: dissipated by normal damping [W]
+  Real dampingPower = 0;               // sum of (Fn - F_elastic) ddelta_s/dt at the centre of pressure:
+                                       // dissipated by normal damping [W]
   Real frictionPower = 0;              // dissipated by friction [W]: sum of -F_t . v_t (viscous law), or the
                                        // spring's SpringLoad::dissipatedPower
 
@@ -105,7 +106,7 @@ struct PairSummary {
   void add(const PressureGeom& geom, const NormalLoad& load) {
     deepestOverlap = std::max(deepestOverlap, geom.effectiveOverlap);
     elasticEnergy += load.elasticEnergy;
-    dampingPower += (load.force - load.elasticForce) * geom.overlapRate;
+    dampingPower += (load.force - load.elasticForce) * load.overlapRate;
   }
 };
 

@@ -21,7 +21,9 @@ struct PressureGeom {
   Vector3r tangent1, tangent2;   // t1, t2
   Real radius;                   // combined radius of curvature R* (Eq. 3) [m]
   Real sphereOverlap;            // delta_s, overlap of the encompassing spheres (Eq. 10) [m]
-  Real overlapRate;              // d(delta_s)/dt, positive while approaching [m/s]
+  Real overlapRate;              // d(delta_s)/dt at c, positive while approaching [m/s]
+  Vector2r overlapRateSlope = Vector2r::Zero();  // its gradient over the plane: at plane point x the two sides
+                                                 // approach at overlapRate + overlapRateSlope . x [1/s]
   Real contactRadius;            // a = sqrt(delta_s R*) (Eq. 5) [m]
   ConvexPolygon polygon;         // S: the projected triangle(s), intersected (Fig. 2)
   std::array<Vector2r, 3> nodes;         // body 1's triangle corners projected on the plane, in mesh order
@@ -114,9 +116,16 @@ inline Vector3r planePoint(const PressureGeom& geom, const Vector2r& p) {
   return geom.centre + p.x() * geom.tangent1 + p.y() * geom.tangent2;
 }
 
-// Fills overlapRate (at c) and slip (at c_eff) once the plane and c_eff are known.
+// How fast the two sides approach at plane point x [m/s]: rigid motions make it affine over the plane.
+inline Real overlapRateAt(const PressureGeom& geom, const Vector2r& x) {
+  return geom.overlapRate + geom.overlapRateSlope.dot(x);
+}
+
+// Fills overlapRate (at c) with its slope over the plane, and slip (at c_eff), once the plane and c_eff are known.
 inline void setRelativeVelocity(PressureGeom& geom, const RelativeMotion& motion) {
   geom.overlapRate = -geom.normal.dot(motion.at(geom.centre));
+  geom.overlapRateSlope = Vector2r(-geom.normal.dot(motion.angular.cross(geom.tangent1)),
+                                   -geom.normal.dot(motion.angular.cross(geom.tangent2)));
   const Vector3r v = motion.at(planePoint(geom, geom.effectivePoint));
   geom.slip = v - v.dot(geom.normal) * geom.normal;
 }

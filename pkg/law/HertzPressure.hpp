@@ -7,7 +7,8 @@
 // amplitude (fast separation) is clamped to zero. The elastic part, (2 E* / (pi R*)) sqrt(a^2 - r^2), is the
 // pressure at ddelta/dt = 0: what the contact's elastic energy is computed from. Written with delta rather than
 // a^2 / R*, the damping keeps Eq. 7's ratio A ddelta/dt / delta to the elastic force on an elliptical contact too,
-// whose circle (PressureGeom::toCircle) has a^2 != delta R*.
+// whose circle (PressureGeom::toCircle) has a^2 != delta R*. Law2 integrates the elastic part over S n Omega and
+// damps it at the rate the sides approach at its centre of pressure (Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp).
 #pragma once
 
 #include <algorithm>
@@ -19,9 +20,8 @@
 namespace roundedmesh {
 
 struct HertzPressure {
-  Real amplitude;             // (2 E* / pi)(1/R* + A ddelta/dt / a^2), clamped at 0 [Pa/m]
-  Real contactRadiusSq;       // a^2 [m^2]
-  Real elasticAmplitude = 0;  // (2 E* / pi) / R*, the amplitude without damping [Pa/m]
+  Real amplitude;        // (2 E* / (pi R*)) (1 + A ddelta/dt / delta), clamped at 0 [Pa/m]
+  Real contactRadiusSq;  // a^2 [m^2]
 
   // Pressure at squared distance rSq from the circle's centre [Pa].
   Real at(Real rSq) const { return amplitude * std::sqrt(std::max(contactRadiusSq - rSq, Real(0))); }
@@ -47,10 +47,16 @@ inline Real hertzStiffnessAt(const HertzPhys& phys, Real radius, Real overlap) {
   return 2 * phys.effectiveModulus * std::sqrt(radius * overlap);
 }
 
+// Eq. 7's damping as one factor on the elastic pressure, 1 + A (ddelta/dt) / delta, clamped at 0 so that the
+// pressure never pulls. overlap delta [m], overlapRate ddelta/dt [m/s].
+inline Real dampingFactor(const HertzPhys& phys, Real overlap, Real overlapRate) {
+  return std::max(1 + phys.damping * overlapRate / overlap, Real(0));
+}
+
+// The pressure over the contact's whole circle, damped at the rate the sides approach at its centre c.
 inline HertzPressure hertzPressure(const PressureGeom& geom, const HertzPhys& phys) {
-  const Real elastic = hertzElasticAmplitude(phys, geom.radius);
-  const Real amplitude = elastic * (1 + phys.damping * geom.overlapRate / geom.sphereOverlap);
-  return {std::max(amplitude, Real(0)), geom.contactRadius * geom.contactRadius, elastic};
+  return {hertzElasticAmplitude(phys, geom.radius) * dampingFactor(phys, geom.sphereOverlap, geom.overlapRate),
+          geom.contactRadius * geom.contactRadius};
 }
 
 }  // namespace roundedmesh

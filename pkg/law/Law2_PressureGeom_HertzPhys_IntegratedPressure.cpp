@@ -26,7 +26,7 @@ bool useDirectRegime(const ConvexPolygon& s, Real a, const PressureOptions& opti
   return M_PI * a * a < options.gamma * areaPerPoint;
 }
 
-// The pressure's shape sqrt(a^2 - r^2) is integrated once; the amplitudes, damped and elastic, scale it.
+// The integrals below are of the elastic pressure; `damp` then scales the load by Eq. 7's damping.
 NormalLoad integrateByQuadrature(const ConvexPolygon& polygon, const HertzPressure& pressure) {
   // The pressure is zero outside the circle: integrating over S clipped to the circle's square gives the same
   // integral with every quadrature point where the pressure is.
@@ -41,25 +41,21 @@ NormalLoad integrateByQuadrature(const ConvexPolygon& polygon, const HertzPressu
     integral += dG.sum();
     moment += leverTimesNormal(Vector2r((dG * x).sum(), (dG * y).sum()));
   }
-  return {pressure.amplitude * integral, pressure.amplitude * moment, Regime::Quadrature,
-          pressure.elasticAmplitude * integral, pressure.elasticAmplitude * moment};
+  return {pressure.amplitude * integral, pressure.amplitude * moment, Regime::Quadrature};
 }
 
 NormalLoad applyDirectly(const ConvexPolygon& polygon, const Vector2r& effectivePoint, const HertzPressure& pressure) {
   const Real fraction = circlePolygonArea(std::sqrt(pressure.contactRadiusSq), polygon) / (M_PI * pressure.contactRadiusSq);
   const Real integral = pressure.circleIntegral() * fraction;
   const Real force = pressure.amplitude * integral;
-  const Real elastic = pressure.elasticAmplitude * integral;
-  return {force, force * leverTimesNormal(effectivePoint), Regime::Direct, elastic,
-          elastic * leverTimesNormal(effectivePoint)};
+  return {force, force * leverTimesNormal(effectivePoint), Regime::Direct};
 }
 
 // The closed forms; `energyAmplitude`: e / (a^2 - r^2)^(3/2) = (4 E* / (3 pi R*^2)) [Pa/m^2].
 NormalLoad integrateExactly(const ConvexPolygon& polygon, const HertzPressure& pressure, Real energyAmplitude) {
   const DiskPolygonIntegrals integrals = diskPolygonIntegrals(std::sqrt(pressure.contactRadiusSq), polygon);
   const Vector2r moment = leverTimesNormal(integrals.pressureMoment);
-  NormalLoad load{pressure.amplitude * integrals.pressure, pressure.amplitude * moment, Regime::Exact,
-                  pressure.elasticAmplitude * integrals.pressure, pressure.elasticAmplitude * moment};
+  NormalLoad load{pressure.amplitude * integrals.pressure, pressure.amplitude * moment, Regime::Exact};
   load.elasticEnergy = energyAmplitude * integrals.energy;
   return load;
 }
@@ -73,11 +69,22 @@ NormalLoad integrate(const ConvexPolygon& polygon, const Vector2r& effectivePoin
              : integrateByQuadrature(polygon, pressure);
 }
 
+// Keeps the elastic load as its elastic part and scales it by the damping at its centre of pressure.
+NormalLoad damp(NormalLoad load, const PressureGeom& geom, const HertzPhys& phys) {
+  load.elasticForce = load.force;
+  load.elasticMoment = load.moment;
+  load.overlapRate = load.force > 0 ? overlapRateAt(geom, centreOfPressure(load)) : geom.overlapRate;
+  const Real factor = dampingFactor(phys, geom.sphereOverlap, load.overlapRate);
+  load.force *= factor;
+  load.moment *= factor;
+  return load;
+}
+
 }  // namespace
 
 NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& geom, const HertzPhys& phys,
                                                           const PressureOptions& options) {
-  const HertzPressure pressure = hertzPressure(geom, phys);
+  const HertzPressure pressure{hertzElasticAmplitude(phys, geom.radius), geom.contactRadius * geom.contactRadius};
   const Real energyAmplitude = hertzEnergyAmplitude(phys, geom.radius);
   NormalLoad load =
       geom.elliptical
@@ -85,17 +92,13 @@ NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& ge
                       options, energyAmplitude)
           : integrate(geom.polygon, geom.effectivePoint, pressure, options, energyAmplitude);
   // A Hertz contact's potential, (2/5) F delta, where the pressure is integrated by the paper's rules.
-  if (load.regime != Regime::Exact) load.elasticEnergy = 0.4 * load.elasticForce * geom.sphereOverlap;
+  if (load.regime != Regime::Exact) load.elasticEnergy = 0.4 * load.force * geom.sphereOverlap;
   if (geom.elliptical) {
     // On T(S) the moment is (leverTimesNormal of) the first moment in y; in the plane x = x* + T^-1 y.
-    auto toPlane = [&](Real force, const Vector2r& moment) {
-      const Vector2r firstMoment(-moment.y(), moment.x());
-      return leverTimesNormal(force * geom.ellipseCentre + geom.toCircle.inverse() * firstMoment);
-    };
-    load.moment = toPlane(load.force, load.moment);
-    load.elasticMoment = toPlane(load.elasticForce, load.elasticMoment);
+    const Vector2r firstMoment(-load.moment.y(), load.moment.x());
+    load.moment = leverTimesNormal(load.force * geom.ellipseCentre + geom.toCircle.inverse() * firstMoment);
   }
-  return load;
+  return damp(load, geom, phys);
 }
 
 }  // namespace roundedmesh

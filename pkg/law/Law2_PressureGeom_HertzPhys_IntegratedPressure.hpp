@@ -9,6 +9,10 @@
 // A_S / (N_S N_Q) is the mean area per quadrature point over S's N_S fan triangles; for a triangular S
 // it is the paper's A_j / N_Q. An elliptical contact is integrated the same way over T(S), where its pressure is
 // circular (PressureGeom.hpp); areas are kept, and the moment is mapped back to the plane.
+// The damping (Eq. 7) scales the elastic pressure by one factor, 1 + A ddelta/dt / delta, with ddelta/dt taken at
+// the load's centre of pressure: there the load acts, so its damping part dissipates (F_d ddelta/dt >= 0) however
+// the bodies turn. At c, the paper's point, a spinning body's faceted contacts can push where the sides part and feed
+// the spin (doc/physics.md, "Damping").
 #pragma once
 
 #include "pkg/geom/PressureGeom.hpp"
@@ -37,11 +41,17 @@ struct NormalLoad {
   Regime regime;
   Real elasticForce = 0;  // the undamped part of Fn: the same integral at ddelta/dt = 0 [N]; Fn - it is damping
   Vector2r elasticMoment = Vector2r::Zero();  // the undamped part of Mn [N m]
+  Real overlapRate = 0;   // ddelta/dt at the centre of pressure, which the damping is proportional to [m/s]
   // The contact's elastic energy [J]: (2/5) F_elastic delta_s (doc/physics.md, "Energy"), or in the exact regime the
   // integral over S n Omega of the energy density e = (4 E* / (3 pi R*^2)) (a^2 - r^2)^(3/2), whose
   // delta_s-derivative at fixed S is the elastic pressure.
   Real elasticEnergy = 0;
 };
+
+// Where the load acts, in plane coordinates relative to c [m]: (-Mn_y, Mn_x) / Fn, for Fn > 0.
+inline Vector2r centreOfPressure(const NormalLoad& load) {
+  return Vector2r(-load.moment.y(), load.moment.x()) / load.force;
+}
 
 NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& geom, const HertzPhys& phys,
                                                           const PressureOptions& options);

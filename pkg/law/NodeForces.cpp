@@ -6,10 +6,10 @@ namespace roundedmesh {
 
 std::array<Real, 3> nodeForces(const std::array<Vector2r, 3>& nodes, const NormalLoad& load) {
   if (!(load.force > 0)) return {0, 0, 0};
-  const Vector2r centreOfPressure = Vector2r(-load.moment.y(), load.moment.x()) / load.force;
+  const Vector2r centre = centreOfPressure(load);
   std::array<Real, 3> lambda;
   for (int i = 0; i < 3; ++i)
-    lambda[i] = cross2(nodes[(i + 1) % 3] - centreOfPressure, nodes[(i + 2) % 3] - centreOfPressure);
+    lambda[i] = cross2(nodes[(i + 1) % 3] - centre, nodes[(i + 2) % 3] - centre);
   const Real twiceArea = lambda[0] + lambda[1] + lambda[2];
   // An edge-on triangle has no area to carry pressure; only round-off reaches here, and any split will do.
   if (twiceArea == 0) return {load.force / 3, load.force / 3, load.force / 3};

@@ -85,6 +85,36 @@ TEST(Law2IntegratedPressure, DirectRegimeGivesEq7WhenTheCircleIsInsideS) {
   EXPECT_LT(load.moment.norm(), 1e-12 * eq7);
 }
 
+// Eq. 7's damping on a turning contact: the floor tilts about an axis through c, so the sides approach at c at
+// zero rate while one triangle of the patch goes in and the other comes out. Each triangle's load is its elastic load
+// times 1 + A ddelta/dt / delta, ddelta/dt taken where that load acts: the centre of pressure, found from the
+// undamped load and its velocity from the rigid motion in space, not from the geometry's slope. So each damping part
+// pushes where the sides approach and dissipates, (F - F_el) ddelta/dt > 0; at c (the paper's point) neither would be
+// damped. Tolerance 1e-12 relative: the same integrals, scaled.
+TEST(Law2IntegratedPressure, DampingTakesTheRateWhereTheLoadActs) {
+  const Real L = 0.01, R = 1.0, delta = 4e-4, E = 1e6, A = 0.02;
+  const RoundedMesh patch = squarePatch(L, R);
+  RelativeMotion motion;
+  motion.angular = Vector3r(2, 1, 0);  // about an axis in the patch's plane, through the origin above c [rad/s]
+  const std::vector<PressureGeom> geoms = geomsOf(patch, floorFor(patch, delta), motion);
+  ASSERT_EQ(geoms.size(), 2u);
+  Real power = 0;
+  for (const PressureGeom& g : geoms) {
+    EXPECT_NEAR(g.overlapRate, 0, 1e-15);
+    const NormalLoad elastic = Law2_PressureGeom_HertzPhys_IntegratedPressure(g, HertzPhys{E, 0}, PressureOptions());
+    const NormalLoad damped = Law2_PressureGeom_HertzPhys_IntegratedPressure(g, HertzPhys{E, A}, PressureOptions());
+    const Real rate = -g.normal.dot(motion.at(planePoint(g, centreOfPressure(elastic))));
+    ASSERT_GT(A * std::abs(rate) / delta, 0.1);  // the damping is a tenth of the force or more
+    EXPECT_NEAR(damped.overlapRate, rate, 1e-12 * std::abs(rate));
+    EXPECT_NEAR(damped.force, elastic.force * (1 + A * rate / g.sphereOverlap), 1e-12 * elastic.force);
+    EXPECT_NEAR(damped.elasticForce, elastic.force, 1e-12 * elastic.force);
+    EXPECT_TRUE(centreOfPressure(damped).isApprox(centreOfPressure(elastic), 1e-12));
+    EXPECT_GT((damped.force - damped.elasticForce) * rate, 0);
+    power += (damped.force - damped.elasticForce) * rate;
+  }
+  EXPECT_GT(power, 0);
+}
+
 // Eq. 14 decides per triangle contact: pi a^2 < gamma A_S / (N_S N_Q) selects the direct regime.
 TEST(Law2IntegratedPressure, Eq14SelectsTheRegime) {
   const Real L = 0.1, R = 1.0;

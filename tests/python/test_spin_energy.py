@@ -48,8 +48,9 @@ def test_a_spin_keeps_its_energy_under_the_undamped_energy_law():
     assert start > 1 and end == pytest.approx(start, rel=1e-4)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 41: Eq. 7's damping feeds the spin of a body turning against another "
-                                       "(+0.43 to +0.85 W at 400 rad/s, doc/validation.md)")
 def test_damping_does_not_feed_a_spin():
+    """Eq. 7's damping at the centre of pressure (issue 41) takes energy from a spin. In these 0.02 s the spin lost
+    1.16 % of its energy (measured), where the damping at c fed it; undamped it gains 0.046 % (the paper's law's own
+    work round the spin), so a loss of 0.5 % or more is the damping's."""
     start, end = spin_energy.spinning_pair("spheroid", "pressure", 0.01, 400.0, True, 0.5e-3, 0.02)
-    assert end <= start
+    assert end < (1 - 0.005) * start
