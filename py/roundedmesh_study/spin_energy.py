@@ -1,15 +1,16 @@
 """Where does a settled packing's spin come from? Issue 41, item 1: an analysis, the model is not changed.
 
-The spheroid's settled S1 packing (bench/data/s1_settled_spheroid.csv) holds 38 bodies spinning faster than 10 rad/s
-about their long axes, up to 478 rad/s. This restarts it (peers.build_rounded: S1's box, materials and engine, each
+The spheroid's S1 packing as settled while Eq. 7's damping was taken at the contact circle's centre
+(bench/data/s1_spinning_spheroid.csv, before issue 41's repair) holds 38 bodies spinning faster than 10 rad/s about
+their long axes, up to 478 rad/s. This restarts it (peers.build_rounded: S1's box, materials and engine, each
 body at its recorded pose, velocity and spin) under a set of cases that each change one thing, and follows the
 bodies' kinetic energy for `--time` seconds of simulated time:
 
     default            the engine's defaults (the paper's normal law, Eq. 7's damping A = 0.01 s), dt = 1e-4 s
     dt/4               the same at dt = 2.5e-5 s: what changes with the step is the integration's
-    undamped           A = 0: the elastic pressure alone
+    undamped           the bodies' A = 0 (the box keeps its 0.01 s, so a contact with a wall is damped at 0.005 s)
     energy             normal='energy', the exact gradient of one energy, damped
-    energy, undamped   normal='energy', A = 0: no term but the facing test's cuts may do work
+    energy, undamped   normal='energy', the bodies' A = 0 (the box's as above)
     ... at rest        the same, every spin set to zero first
 
 With --pair, the same question on one contact: two of the shape's bodies, long axes crossed or parallel, pressed
@@ -50,7 +51,7 @@ import roundedmesh as rm  # noqa: E402
 from . import peers  # noqa: E402
 from .benchmarking import machine  # noqa: E402
 from .energy_conservation import kinetic_energies  # noqa: E402
-from .bench_s1_peers import default_poses, read_poses  # noqa: E402
+from .bench_s1_peers import DATA, read_poses  # noqa: E402
 
 TIME_STEP = peers.TIME_STEP  # S1's [s]
 CASES = {
@@ -61,6 +62,7 @@ CASES = {
     "energy, undamped": {"normal": "energy", "damping": 0.0},
 }
 CASES.update({f"{name}, at rest": {**case, "at_rest": True} for name, case in list(CASES.items())})
+SPINNING = os.path.join(DATA, "s1_spinning_spheroid.csv")  # the default --poses
 SAMPLES = 10  # per run, besides its start
 COLUMNS = ["case", "t_s", "translational_J", "rotational_J", "axial_rotational_J", "fastest_spin_rad_s"]
 
@@ -148,7 +150,7 @@ def plot(rows, path):
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--shape", default="spheroid")
-    parser.add_argument("--poses", help="settled packing (CSV; default bench/data's of the shape)")
+    parser.add_argument("--poses", default=SPINNING, help="packing to restart (CSV; default the spinning spheroids)")
     parser.add_argument("--time", type=float, default=0.125, help="simulated time per case [s]")
     parser.add_argument("--pair", action="store_true", help="one contact of two bodies, one spinning (docstring)")
     parser.add_argument("--spin", type=float, default=400.0, help="--pair: body 1's spin [rad/s]")
@@ -165,7 +167,7 @@ def main(argv):
             writer.writerows(pair_cases(args))
         print(f"wrote {args.output}/spin_pair.csv")
         return
-    poses = read_poses(args.poses or default_poses(args.shape), args.shape)
+    poses = read_poses(args.poses, args.shape)
     rows, start = [], time.perf_counter()
     for name in args.cases:
         rows += run_case(name, poses, args.shape, args.time, **CASES[name])
