@@ -8,7 +8,8 @@
 // pressure at ddelta/dt = 0: what the contact's elastic energy is computed from. Written with delta rather than
 // a^2 / R*, the damping keeps Eq. 7's ratio A ddelta/dt / delta to the elastic force on an elliptical contact too,
 // whose circle (PressureGeom::toCircle) has a^2 != delta R*. Law2 integrates the elastic part over S n Omega and
-// damps it at the rate the sides approach at its centre of pressure (Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp).
+// damps it at the rate the sides approach at its centre of pressure
+// (Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp).
 #pragma once
 
 #include <algorithm>

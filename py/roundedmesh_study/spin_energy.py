@@ -76,13 +76,19 @@ def run_case(name, poses, shape, duration, normal="pressure", dt=TIME_STEP, damp
         for i in ids:
             rm.set_material(i, rm.HertzMaterial(damping=damping, **peers.PARTICLE))
     O.dt = dt
-    steps = int(round(duration / dt))
-    rows = [[name, O.time, *kinetic_energies(ids)]]
+    return sampled_run(name, duration, lambda: kinetic_energies(ids))
+
+
+def sampled_run(name, duration, sample):
+    """Runs the scene for `duration` [s] of simulated time at O.dt; rows [name, O.time, *sample()] at the start and
+    at SAMPLES even steps, with progress printed."""
+    steps, start = int(round(duration / O.dt)), O.iter
+    rows = [[name, O.time, *sample()]]
     progress = rm.progress.Progress(steps, name)
     for k in range(1, SAMPLES + 1):
-        O.run(steps * k // SAMPLES - O.iter, True)
-        rows.append([name, O.time, *kinetic_energies(ids)])
-        progress.update(O.iter)
+        O.run(start + steps * k // SAMPLES - O.iter, True)
+        rows.append([name, O.time, *sample()])
+        progress.update(O.iter - start)
     return rows
 
 
@@ -134,12 +140,18 @@ def plot(rows, path):
     panels = [(n for n in names if not n.endswith("at rest")), (n for n in names if n.endswith("at rest"))]
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
     titles = ("with the packing's spins [J]", "spins set to zero [mJ]")
-    for ax, chosen, scale, title in zip(axes, panels, (1.0, 1e3), titles):
+    for ax, chosen, scale in zip(axes, panels, (1.0, 1e3)):
         for name in chosen:
             mine = [r for r in rows if r[0] == name]
             ax.plot([r[1] for r in mine], [scale * r[3] for r in mine], marker="o", ms=3, label=name)
+    save_time_panels(fig, axes, [f"rotational kinetic energy, {title}" for title in titles], path)
+
+
+def save_time_panels(fig, axes, titles, path):
+    """Labels panels plotted against simulated time, one title each, and writes the figure to `path`."""
+    for ax, title in zip(axes, titles):
         ax.set_xlabel("simulated time [s]")
-        ax.set_title(f"rotational kinetic energy, {title}", fontsize=10)
+        ax.set_title(title, fontsize=10)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
     fig.tight_layout()

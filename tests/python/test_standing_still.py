@@ -1,0 +1,65 @@
+"""roundedmesh_study.standing_still (issue 41): its energy columns against the bodies' own motion, and its summary."""
+import os
+
+import pytest
+from yade import O
+
+from roundedmesh_study import spin_energy, standing_still
+from roundedmesh_study.bench_s1_peers import default_poses, read_poses
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+COLUMN = {name: k for k, name in enumerate(standing_still.COLUMNS)}
+
+
+def potential(ids):
+    """sum m g z of the bodies [J], from their positions."""
+    return sum(O.bodies[i].state.mass * 9.81 * O.bodies[i].state.pos[2] for i in ids)
+
+
+def momentum(ids):
+    """sum m v_z of the bodies [kg m/s]."""
+    return sum(O.bodies[i].state.mass * O.bodies[i].state.vel[2] for i in ids)
+
+
+@pytest.fixture
+def few_spheroids():
+    """Six spheroids of the settled packing, the rest left out: they fall onto what is below them."""
+    poses = read_poses(os.path.join(ROOT, default_poses("spheroid")), "spheroid")[:6]
+    rows, ids = standing_still.run("spheroid", poses, 0.01)
+    return rows, ids
+
+
+def test_rows_sample_the_run(few_spheroids):
+    rows, ids = few_spheroids
+    assert len(rows) == spin_energy.SAMPLES + 1 and rows[0][0] == "spheroid, pressure"
+    assert rows[-1][COLUMN["t_s"]] - rows[0][COLUMN["t_s"]] == pytest.approx(0.01, rel=1e-9)
+    for row in rows:  # the total is the sum of O.energy's terms
+        terms = [row[COLUMN[c]] for c in ("yade_kinetic_J", "gravity_work_J", "elastic_J", "normal_damping_J",
+                                          "friction_J")]
+        assert row[COLUMN["total_J"]] == pytest.approx(sum(terms), rel=1e-12, abs=1e-15)
+
+
+def test_gravity_work_is_the_change_of_potential_energy(few_spheroids):
+    """'gravWork', which the summary's descent reads, against m g dz from the bodies' positions over 200 more steps of
+    moving bodies, the one term by which the two sums differ taken out: equal to 1e-12 here (measured); 1e-9 leaves
+    room for the rounding of 1,200 terms summed in another order."""
+    _, ids = few_spheroids
+    before_work, before_potential, before_momentum = dict(O.energy.items())["gravWork"], potential(ids), momentum(ids)
+    O.run(200, True)
+    change = potential(ids) - before_potential
+    assert abs(change) > 1e-5  # they move [J]
+    # YADE sums m g v dt with each step's velocity before its update, leap-frog moves by the one after: the two sums
+    # differ by g dt times the change of the vertical momentum.
+    expected = change - 9.81 * O.dt * (momentum(ids) - before_momentum)
+    assert dict(O.energy.items())["gravWork"] - before_work == pytest.approx(expected, rel=1e-9)
+
+
+def test_summary_of_the_rows():
+    rows = [["r", 0.0, 1.0, 2.0, 3.0, 9.0, 0.0, 5.0, 0.0, 0.0, 20.0],
+            ["r", 0.1, 0.5, 0.5, 7.0, 9.0, -1.0, 5.0, 4.0, 1.0, 23.0]]
+    summary = dict(zip(standing_still.SUMMARY, standing_still.summary(rows, 2.0)))
+    assert summary["kinetic_start_J"] == 3.0 and summary["kinetic_end_J"] == 1.0
+    assert summary["fastest_spin_rad_s"] == 7.0
+    assert summary["drift_J"] == 3.0 and summary["dissipated_J"] == 5.0
+    assert summary["drift_over_dissipated"] == pytest.approx(0.6, rel=1e-15)
+    assert summary["descent_mm"] == pytest.approx(500.0, rel=1e-15)  # 1 J of potential over 2 N: 0.5 m
