@@ -1,6 +1,7 @@
 // The energy law (doc/physics.md, "The energy law"): the elastic force is the exact gradient of the contact's
 // energy (ContactEnergyGradient.hpp), so that it does no work round a closed path; the damping, the rest of the
-// pressure, acts as the paper's (node forces, Eq. 15).
+// pressure, acts as the paper's (node forces, Eq. 15), pushing while the sides approach and pulling while they part,
+// as Eq. 7's term does until the whole pressure reaches zero.
 #include "pkg/law/HertzPressure.hpp"
 #include "pkg/law/NormalLaws.hpp"
 
@@ -9,8 +10,14 @@ namespace roundedmesh {
 void energyNormalLaw(const TriangleLoad& contact, Wrench& onBody) {
   const PressureGeom& geom = contact.geom;
   const NormalLoad& load = contact.load;
-  const NormalLoad damping{load.force - load.elasticForce, load.moment - load.elasticMoment, load.regime};
-  addNodeForcesToBody(contact.corners, nodeForces(geom.nodes, damping), geom.normal, onBody);
+  // The damping is the elastic pressure times a factor (Law2), so it acts where the elastic pressure does; its node
+  // forces are the elastic load's scaled by that factor, of either sign (nodeForces splits a load that pushes).
+  if (load.elasticForce > 0) {
+    const Real damping = (load.force - load.elasticForce) / load.elasticForce;
+    std::array<Real, 3> forces = nodeForces(geom.nodes, {load.elasticForce, load.elasticMoment, load.regime});
+    for (Real& f : forces) f *= damping;
+    addNodeForcesToBody(contact.corners, forces, geom.normal, onBody);
+  }
   const EnergyForces elastic =
       contactEnergyGradient(geom, load.elasticForce, hertzEnergyAmplitude(contact.phys, geom.radius), contact.corners,
                             contact.sphereCentre, contact.partner);

@@ -1,4 +1,5 @@
 """roundedmesh_study.standing_still (issue 41): its energy columns against the bodies' own motion, and its summary."""
+import csv
 import os
 
 import pytest
@@ -63,3 +64,17 @@ def test_summary_of_the_rows():
     assert summary["drift_J"] == 3.0 and summary["dissipated_J"] == 5.0
     assert summary["drift_over_dissipated"] == pytest.approx(0.6, rel=1e-15)
     assert summary["descent_mm"] == pytest.approx(500.0, rel=1e-15)  # 1 J of potential over 2 N: 0.5 m
+
+
+def test_main_writes_its_tables_and_figure(tmp_path, monkeypatch):
+    """The script end to end on the lowest spheroid alone, both laws, 20 steps: a row per sample and a summary per run."""
+    monkeypatch.chdir(ROOT)  # bench/data is read relative to the repository's root
+    standing_still.main(["--shapes", "spheroid", "--lowest", "1", "--time", "0.002", "--normal", "pressure", "energy",
+                         "--output", str(tmp_path)])
+    with open(tmp_path / "standing_still.csv") as f:
+        assert len(f.read().splitlines()) == 1 + 2 * (spin_energy.SAMPLES + 1)
+    with open(tmp_path / "standing_still_summary.csv", newline="") as f:
+        runs = [row["run"] for row in csv.DictReader(f)]
+    assert runs == ["spheroid, pressure", "spheroid, energy"]
+    assert (tmp_path / "standing_still.png").stat().st_size > 0
+    assert len(O.bodies) == 1 + 5  # the lowest body and S1's five walls
