@@ -89,6 +89,17 @@ const BodyMesh& spheroid() {
   return mesh;
 }
 
+// How far along u body 1, at orientation ori, is from body 0 when the two first touch (bisection on the energy) [m].
+Real firstTouch(Pair& pair, const Vector3r& u, const Quaternionr& ori) {
+  Real lo = 0, hi = 0.1;
+  for (int k = 0; k < 60; ++k) {
+    const Real mid = (lo + hi) / 2;
+    pair.data.bodyStates[1] = test::at(mid * u, ori);
+    (pair.energy() > 0 ? lo : hi) = mid;
+  }
+  return lo;
+}
+
 // `moving`: body 0's state (other = false) or the other side's.
 void expectGradient(Pair& pair, bool other, BodyState& moving, const char* what) {
   const Wrench analytic = pair.on(other);
@@ -110,17 +121,11 @@ TEST(ContactEnergy, TheForceBetweenTwoBodiesIsMinusTheEnergysGradient) {
     pair.model.bodies = {roundedBody(0, distortedBall(), kRubber), roundedBody(1, spheroid(), kRubber)};
     pair.data.resize(pair.model);
     pair.data.bodyStates[0] = test::at(Vector3r::Zero(), randomRotation(random));
-    // Along a random direction, 1 mm past first touch (found by bisection on the energy).
+    // Along a random direction, 1 mm past first touch.
     std::normal_distribution<Real> normal;
     const Vector3r u = Vector3r(normal(random), normal(random), normal(random)).normalized();
     const Quaternionr ori = randomRotation(random);
-    Real lo = 0, hi = 0.1;
-    for (int k = 0; k < 60; ++k) {
-      const Real mid = (lo + hi) / 2;
-      pair.data.bodyStates[1] = test::at(mid * u, ori);
-      (pair.energy() > 0 ? lo : hi) = mid;
-    }
-    pair.data.bodyStates[1] = test::at((lo - 1e-3) * u, ori);
+    pair.data.bodyStates[1] = test::at((firstTouch(pair, u, ori) - 1e-3) * u, ori);
     ASSERT_GT(pair.energy(), 0);
     expectGradient(pair, true, pair.data.bodyStates[1], "two bodies, the second");
     expectGradient(pair, false, pair.data.bodyStates[0], "two bodies, the first");
@@ -148,15 +153,10 @@ TEST(ContactEnergy, TheDampingActsAsThePapersWhetherTheSidesApproachOrPart) {
   std::normal_distribution<Real> normal;
   const Vector3r u = Vector3r(normal(random), normal(random), normal(random)).normalized();
   const Quaternionr ori = randomRotation(random);
-  Real lo = 0, hi = 0.1;
-  for (int k = 0; k < 60; ++k) {
-    const Real mid = (lo + hi) / 2;
-    pair.data.bodyStates[1] = test::at(mid * u, ori);
-    (pair.energy() > 0 ? lo : hi) = mid;
-  }
+  const Real touch = firstTouch(pair, u, ori);
   for (const Real approach : {1.0, -1.0}) {
     BodyState& moving = pair.data.bodyStates[1];
-    moving = test::at((lo - 1e-3) * u, ori);
+    moving = test::at((touch - 1e-3) * u, ori);
     Wrench added[2];
     for (const NormalLaw law : {NormalLaw::Pressure, NormalLaw::Energy}) {
       pair.model.options.pressure.normal = law;
