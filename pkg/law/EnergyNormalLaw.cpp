@@ -10,14 +10,8 @@ namespace roundedmesh {
 void energyNormalLaw(const TriangleLoad& contact, Wrench& onBody) {
   const PressureGeom& geom = contact.geom;
   const NormalLoad& load = contact.load;
-  // The damping is the elastic pressure times a factor (Law2), so it acts where the elastic pressure does; its node
-  // forces are the elastic load's scaled by that factor, of either sign (nodeForces splits a load that pushes).
-  if (load.elasticForce > 0) {
-    const Real damping = (load.force - load.elasticForce) / load.elasticForce;
-    std::array<Real, 3> forces = nodeForces(geom.nodes, {load.elasticForce, load.elasticMoment, load.regime});
-    for (Real& f : forces) f *= damping;
-    addNodeForcesToBody(contact.corners, forces, geom.normal, onBody);
-  }
+  const NormalLoad damping{load.force - load.elasticForce, load.moment - load.elasticMoment, load.regime};
+  addNodeForcesToBody(contact.corners, nodeForces(geom.nodes, damping), geom.normal, onBody);
   const EnergyForces elastic =
       contactEnergyGradient(geom, load.elasticForce, hertzEnergyAmplitude(contact.phys, geom.radius), contact.corners,
                             contact.sphereCentre, contact.partner);

@@ -1,11 +1,14 @@
 #include "pkg/law/NodeForces.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace roundedmesh {
 
 std::array<Real, 3> nodeForces(const std::array<Vector2r, 3>& nodes, const NormalLoad& load) {
-  if (!(load.force > 0)) return {0, 0, 0};
+  // Eq. 15 holds for a load of either sign (the energy law's damping pulls while the sides part); a zero load has no
+  // centre of pressure.
+  if (load.force == 0 || !std::isfinite(load.force)) return {0, 0, 0};
   const Vector2r centre = centreOfPressure(load);
   std::array<Real, 3> lambda;
   for (int i = 0; i < 3; ++i)

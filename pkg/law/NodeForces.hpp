@@ -1,6 +1,6 @@
 // Transfer of a triangle's normal load to its corner nodes and to the bodies (Section 2.5).
 //   Eq. 15: node forces F_1..3 along n12 with sum F_i = Fn and sum r_i x F_i n12 = Mn, r_i the projected
-//           corners relative to c. Its unique solution is F_i = Fn * lambda_i, lambda the barycentric
+//           corners relative to c; Fn of either sign (a damping load pulls while the sides part). Its unique solution is F_i = Fn * lambda_i, lambda the barycentric
 //           coordinates of the centre of pressure (-Mn_y, Mn_x) / Fn in the projected triangle, which is
 //           how it is solved here: no 3x3 inverse, and bounded even for nearly edge-on triangles.
 //   Eqs. 16-17: body 1 receives -F_i n12 at each corner x_i.

@@ -99,6 +99,10 @@ def main(argv):
     parser.add_argument("--lowest", type=int, default=0, help="restart only this many bodies, the lowest (0: all)")
     parser.add_argument("--output", default=os.path.join("out", "standing_still"))
     args = parser.parse_args(argv)
+    if not args.time > 0:
+        parser.error(f"--time {args.time:g}: the time to stand must be positive [s]")
+    if args.lowest < 0:
+        parser.error(f"--lowest {args.lowest}: a number of bodies, 0 for all")
     os.makedirs(args.output, exist_ok=True)
     print(f"# {machine()}\n# /usr/bin/python3 scripts/validation/standing_still.py {shlex.join(argv)}", flush=True)
     rows, summaries = [], []

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <random>
 
 #include "pkg/law/NodeForces.hpp"
@@ -19,8 +20,9 @@ std::array<Real, 3> solveEq15(const std::array<Vector2r, 3>& r, const NormalLoad
 }
 
 // Random triangles and loads whose centre of pressure lies inside the triangle (as it always does, being
-// inside S): the barycentric solution equals Eq. 15's. Tolerance 1e-9 relative to Fn: LU round-off on
-// triangles with a condition number up to ~1e4.
+// inside S): the barycentric solution equals Eq. 15's, for loads that push and, every other trial, loads that pull
+// (the energy law's damping while the sides part). Tolerance 1e-9 relative to Fn: LU round-off on triangles with a
+// condition number up to ~1e4.
 TEST(NodeForces, SolveEq15) {
   std::mt19937 random(7);
   std::uniform_real_distribution<Real> u(-1, 1), positive(0, 1);
@@ -31,11 +33,11 @@ TEST(NodeForces, SolveEq15) {
     Real l0 = positive(random), l1 = positive(random), l2 = positive(random);
     const Real s = l0 + l1 + l2;
     const Vector2r cop = (l0 * nodes[0] + l1 * nodes[1] + l2 * nodes[2]) / s;
-    const Real F = 1 + 10 * positive(random);
+    const Real F = (trial % 2 ? 1 : -1) * (1 + 10 * positive(random));
     const NormalLoad load{F, F * Vector2r(cop.y(), -cop.x()), Regime::Quadrature};
     const std::array<Real, 3> ours = nodeForces(nodes, load), reference = solveEq15(nodes, load);
-    for (int i = 0; i < 3; ++i) EXPECT_NEAR(ours[i], reference[i], 1e-9 * F);
-    EXPECT_NEAR(ours[0] + ours[1] + ours[2], F, 1e-12 * F);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(ours[i], reference[i], 1e-9 * std::abs(F));
+    EXPECT_NEAR(ours[0] + ours[1] + ours[2], F, 1e-12 * std::abs(F));
   }
 }
 

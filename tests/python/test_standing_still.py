@@ -78,3 +78,11 @@ def test_main_writes_its_tables_and_figure(tmp_path, monkeypatch):
     assert runs == ["spheroid, pressure", "spheroid, energy"]
     assert (tmp_path / "standing_still.png").stat().st_size > 0
     assert len(O.bodies) == 1 + 5  # the lowest body and S1's five walls
+
+
+@pytest.mark.parametrize("bad", [["--time", "0"], ["--time", "nan"], ["--lowest", "-1"]])
+def test_main_refuses_bad_arguments(bad, tmp_path, capsys):
+    with pytest.raises(SystemExit):
+        standing_still.main(bad + ["--output", str(tmp_path / "out")])
+    assert bad[0] in capsys.readouterr().err
+    assert not (tmp_path / "out").exists()  # refused before anything is written
