@@ -212,6 +212,8 @@ CoreLoad corePair(const ContactModel& model, const ContactData& data, const Body
     const RoundedMesh& mesh2 = *model.bodies[pair.other].mesh;
     const InscribedSpheres& other = mesh2.inscribedSpheres();
     const BodyState& s2 = data.bodyStates[pair.other];
+    // A body thinner than the core's grid resolves (a 1 mm plate 50 mm long) has no core.
+    if (spheres.radii.empty() || other.radii.empty()) return load;
     // Two core spheres touch only where the bodies' solids overlap by inset (r_i + r_j) or more: a pair whose triangle
     // contacts are all shallower than half the least of that, or which has none and neither centre inside the other
     // body, is skipped (most pairs of a packing, at the cost of a comparison).

@@ -4,29 +4,9 @@
 #include <cmath>
 #include <vector>
 
+#include "pkg/math/SegmentCrossing.hpp"
+
 namespace roundedmesh {
-namespace {
-
-// Where the segment from `from` to `to` crosses triangle abc (Moller-Trumbore), as a parameter in (0, 1]; -1 if it
-// does not (a segment in the triangle's plane does not pass through it).
-Real crossing(const Vector3r& from, const Vector3r& to, const Vector3r& a, const Vector3r& b, const Vector3r& c) {
-  const Vector3r d = to - from, e1 = b - a, e2 = c - a;
-  const Vector3r h = d.cross(e2);
-  const Real det = e1.dot(h);
-  if (det == 0) return -1;
-  const Real inverse = 1 / det;
-  const Vector3r s = from - a;
-  const Real u = inverse * s.dot(h);
-  if (u < 0 || u > 1) return -1;
-  const Vector3r q = s.cross(e1);
-  const Real v = inverse * d.dot(q);
-  if (v < 0 || u + v > 1) return -1;
-  const Real t = inverse * e2.dot(q);
-  return t > 0 && t <= 1 ? t : -1;
-}
-
-}  // namespace
-
 namespace {
 
 struct Crossing {
@@ -38,11 +18,8 @@ struct Crossing {
 // box meets the path's, tested exactly), in order along it; in a buffer of the thread's, kept between calls.
 const std::vector<Crossing>& crossings(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x,
                                        Vector3r& a, Vector3r& b) {
-  // `from` is often a corner of s (c_eff is often a corner of S): start within s instead, as far from the corner as
-  // round-off could blur (1e-6 of the way to its centroid), so that the path starts on s alone, then runs parallel.
   const Triangle& own = mesh.triangles()[s];
-  const Vector3r centroid = (mesh.vertices()[own[0]] + mesh.vertices()[own[1]] + mesh.vertices()[own[2]]) / 3;
-  const Vector3r shift = 1e-6 * (centroid - from);
+  const Vector3r shift = startWithin(mesh.vertices()[own[0]], mesh.vertices()[own[1]], mesh.vertices()[own[2]], from);
   a = from + shift;
   b = x + shift;
   const AlignedBox3r path = AlignedBox3r(a.cwiseMin(b), a.cwiseMax(b));
@@ -89,36 +66,43 @@ bool pathStaysInsideBody(const RoundedMesh& mesh, int s, const Vector3r& from, c
   return true;
 }
 
-bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom) {
+bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom,
+                       bool deep) {
   const RoundedTriangle& p = mesh1.rounded(s);
   const RoundedTriangle& q = body2.mesh.rounded(t);
+  const Vector3r& n = geom.normal;
   const Vector3r sphere2 = body2.rotation * q.sphereCentre + body2.translation;
   // The line along n12 through c_eff, offset from the line of centres by `lateral`.
-  const Vector3r lateral = planePoint(geom, geom.effectivePoint) - geom.centre;
-  const Real hSq = lateral.squaredNorm();
-  const Vector3r q1 = p.sphereCentre + lateral + std::sqrt(std::max(p.radius * p.radius - hSq, Real(0))) * geom.normal;
-  const Vector3r q2 = sphere2 + lateral - std::sqrt(std::max(q.radius * q.radius - hSq, Real(0))) * geom.normal;
-  if (!insidePlaced(body2, q1) || !insideRoundedSolid(mesh1, q2)) return false;
-  // Between its ends, the segment is sampled no farther apart than the finer field's tolerance: three points (the
-  // ends and the middle) let a segment run out of one body and back in, along a thin sheet where two bodies overlap
-  // by 3 mm, and score 33 mm (two gummy bears side by side in S1).
-  const Real spacing = std::min(mesh1.solidDistance().tolerance(), body2.mesh.solidDistance().tolerance());
-  const int samples = static_cast<int>(std::ceil((q1 - q2).norm() / spacing));
-  for (int k = 1; k < samples; ++k) {
-    const Vector3r x = q1 + (q2 - q1) * (Real(k) / samples);
-    if (!insidePlaced(body2, x) || !insideRoundedSolid(mesh1, x)) return false;
-  }
-  // The fields cannot see a gap narrower than twice their tolerance: a segment that long is followed through both
-  // flat surfaces exactly, from where it crosses its own triangle.
-  const Real blind = 2 * std::max(mesh1.maxCapHeight() + mesh1.solidDistance().tolerance(),
-                                  body2.mesh.maxCapHeight() + body2.mesh.solidDistance().tolerance());
-  if ((q1 - q2).norm() <= blind) return true;
   const Vector3r line = planePoint(geom, geom.effectivePoint);
+  const Vector3r lateral = line - geom.centre;
+  const Real hSq = lateral.squaredNorm();
+  const Vector3r q1 = p.sphereCentre + lateral + std::sqrt(std::max(p.radius * p.radius - hSq, Real(0))) * n;
+  const Vector3r q2 = sphere2 + lateral - std::sqrt(std::max(q.radius * q.radius - hSq, Real(0))) * n;
+  // Where the line crosses each flat triangle, and how far the other body's end of the segment lies behind it, in
+  // the flat solid: the stretch that solid must hold (none where that end lies in the triangle's own cap). It does,
+  // surely, where it crosses none of the triangle's exits.
   const Matrix3r back = body2.rotation.transpose();
-  const Vector3r line2 = back * (line - body2.translation), normal2 = back * geom.normal;
-  return pathStaysInsideBody(mesh1, s, line + lineToTriangle(mesh1, s, line, geom.normal) * geom.normal, q2) &&
-         pathStaysInsideBody(body2.mesh, t, line2 + lineToTriangle(body2.mesh, t, line2, normal2) * normal2,
-                             back * (q1 - body2.translation));
+  const Vector3r line2 = back * (line - body2.translation), normal2 = back * n;
+  const Vector3r entry1 = line + lineToTriangle(mesh1, s, line, n) * n;
+  const Vector3r entry2 = line2 + lineToTriangle(body2.mesh, t, line2, normal2) * normal2;
+  const Vector3r end2 = back * (q1 - body2.translation);
+  const bool sure1 = (entry1 - q2).dot(n) <= 0 || mesh1.exits().keepsInside(mesh1, s, entry1, q2);
+  const bool sure2 = (end2 - entry2).dot(normal2) <= 0 || body2.mesh.exits().keepsInside(body2.mesh, t, entry2, end2);
+  if (sure1 && sure2) return true;
+  if (deep) {
+    // The fields reject most false deep pairs before the exact paths are followed. Between its ends, the segment
+    // is sampled no farther apart than the finer field's tolerance: three points (the ends and the middle) let a
+    // segment run out of one body and back in, along a thin sheet where two bodies overlap by 3 mm, and score
+    // 33 mm (two gummy bears side by side in S1).
+    if (!insidePlaced(body2, q1) || !insideRoundedSolid(mesh1, q2)) return false;
+    const Real spacing = std::min(mesh1.solidDistance().tolerance(), body2.mesh.solidDistance().tolerance());
+    const int samples = static_cast<int>(std::ceil((q1 - q2).norm() / spacing));
+    for (int k = 1; k < samples; ++k) {
+      const Vector3r x = q1 + (q2 - q1) * (Real(k) / samples);
+      if (!insidePlaced(body2, x) || !insideRoundedSolid(mesh1, x)) return false;
+    }
+  }
+  return (sure1 || pathStaysInsideBody(mesh1, s, entry1, q2)) && (sure2 || pathStaysInsideBody(body2.mesh, t, entry2, end2));
 }
 
 }  // namespace roundedmesh

@@ -1,17 +1,20 @@
-// Which triangle pairs touch, past the Hertz range (doc/physics.md, "Which triangle pairs touch"). Appendix B
-// alone accepts pairs far from where two bodies really overlap: a small sphere of body 1 swallowed by a large
-// or flat triangle's sphere of body 2 that reaches through or past body 2 scores an effective overlap of
-// centimetres where the bodies overlap by a millimetre, or not at all. At a real contact, however deep, the
-// surface points on the line along n12 through c_eff, q1 on cap 1 and q2 on cap 2 (|q1 - q2| = delta_eff), bound
-// a segment that lies inside both bodies: from q2 the line enters body 2, from q1 it enters body 1. So
-//   a triangle pair deeper than `shallow` touches only if the segment q1 q2 lies in both bodies' solids, tested
-// at its ends and at points no farther apart than the fields' tolerance between them, each point against the
-// other body's distance field (SolidDistance.hpp, and its own between the ends): within its tallest cap
-// (points of the rounded solid lie that close to the flat one) plus the field's tolerance. Shallow pairs are left
-// to Appendix B: the false pairs are as deep as bodies are thick. A field cannot see a gap narrower than twice its
-// tolerance, and two bodies side by side overlap along thin sheets no thicker (3 mm for S1's bears, whose fields'
-// tolerance is about that), so a segment longer than that is then followed through both flat surfaces exactly.
-// The candidate lists use the necessary condition on one triangle of each pair, capReaches (CapReach.hpp).
+// Which triangle pairs touch (doc/physics.md, "Which triangle pairs touch"). Appendix B alone accepts pairs far
+// from where two bodies really overlap: a small sphere of body 1 swallowed by a large or flat triangle's sphere of
+// body 2 that reaches through or past body 2 scores an effective overlap of centimetres where the bodies overlap by
+// a millimetre, or not at all; and where parts of two bodies thinner than the spheres' overlap lie across each
+// other (a coarse mesh's ears and legs, prepared with sharp edges), it scores a millimetre across a gap. At a real
+// contact, however shallow, the surface points on the line along n12 through c_eff, q1 on cap 1 and q2 on cap 2
+// (|q1 - q2| = delta_eff), bound a segment that lies inside both bodies: from q2 the line enters body 2, from q1
+// it enters body 1. So
+//   a triangle pair touches only if the segment q1 q2 lies in both bodies' solids.
+// Each body must hold the stretch of the segment behind its own triangle. Where that stretch is shorter than the
+// distance to the triangle's nearest exit at its angle (TriangleExits.hpp), or crosses none of its exits, it does;
+// this settles nearly every pair of smooth bodies. Otherwise the stretch is followed through the flat surface
+// exactly. A pair
+// deeper than `shallow` is first tested against both bodies' distance fields (SolidDistance.hpp), at its ends and
+// at points no farther apart than the fields' tolerance between them: within each body's tallest cap (points of
+// the rounded solid lie that close to the flat one) plus the field's tolerance; this rejects most false deep pairs
+// cheaply. The candidate lists use the necessary condition on one triangle of each pair, capReaches (CapReach.hpp).
 #pragma once
 
 #include "pkg/bound/CapReach.hpp"
@@ -37,7 +40,9 @@ inline Real lineToTriangle(const RoundedMesh& mesh, int s, const Vector3r& x, co
   return mesh.rounded(s).normal.dot(mesh.vertices()[mesh.triangles()[s][0]] - x) / mesh.rounded(s).normal.dot(d);
 }
 
-// The segment test for triangle s of mesh1 and triangle t of body 2 in contact as `geom` (body 1's frame).
-bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom);
+// The segment test for triangle s of mesh1 and triangle t of body 2 in contact as `geom` (body 1's frame); `deep`:
+// the pair is deeper than the Hertz range, and the distance fields are asked first.
+bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom,
+                       bool deep);
 
 }  // namespace roundedmesh

@@ -105,6 +105,11 @@ const InscribedSpheres& RoundedMesh::inscribedSpheres() const {
   return lazy_->spheres;
 }
 
+const TriangleExits& RoundedMesh::exits() const {
+  std::call_once(lazy_->exitsBuilt, [&] { lazy_->exits = TriangleExits(*this, 0.1 * sphereBoundRadius_); });
+  return lazy_->exits;
+}
+
 std::vector<Real> RoundedMesh::radii() const {
   std::vector<Real> out(rounded_.size());
   std::transform(rounded_.begin(), rounded_.end(), out.begin(), [](const RoundedTriangle& r) { return r.radius; });

@@ -20,6 +20,7 @@
 #include "pkg/shape/PrincipalCurvature.hpp"
 #include "pkg/shape/SolidDistance.hpp"
 #include "pkg/shape/TriangleColumns.hpp"
+#include "pkg/shape/TriangleExits.hpp"
 
 namespace roundedmesh {
 
@@ -64,6 +65,10 @@ class RoundedMesh {
   // The spheres inscribed in the flat mesh that its core is made of (InscribedSpheres.hpp), built on first use
   // (thread-safe).
   const InscribedSpheres& inscribedSpheres() const;
+  // Where a line entering the flat solid through a triangle can leave it (TriangleExits.hpp), within a tenth of
+  // sphereBoundRadius (at least a tenth of the volume-equivalent radius: the Hertz range); built on first use
+  // (thread-safe).
+  const TriangleExits& exits() const;
   // The same mesh moved rigidly: x -> rotation * x + translation.
   RoundedMesh transformed(const Matrix3r& rotation, const Vector3r& translation) const;
 
@@ -77,9 +82,10 @@ class RoundedMesh {
   TriangleTree tree_;
   TriangleColumns columns_;
   struct Lazy {
-    std::once_flag distanceBuilt, spheresBuilt;
+    std::once_flag distanceBuilt, spheresBuilt, exitsBuilt;
     std::unique_ptr<const SolidDistance> distance;
     InscribedSpheres spheres;
+    TriangleExits exits;
   };
   std::shared_ptr<Lazy> lazy_ = std::make_shared<Lazy>();  // copies share the same geometry
 };
