@@ -208,7 +208,8 @@ def run(args):
             rows.append((O.iter, O.time, deepest(), fastest, 1e3 * (time.perf_counter() - before) / SAMPLE))
             progress.update(O.iter)
     except RuntimeError as error:
-        failure = str(error).splitlines()[0][:600]
+        # YADE puts "PyRunner error." first and the engine's reason after it: keep them all.
+        failure = " ".join(str(error).split())[:600]
     seconds = time.perf_counter() - start
     os.makedirs(args.output, exist_ok=True)
     path = os.path.join(args.output, f"{args.contents}_{args.run}.csv")
