@@ -17,7 +17,7 @@ std::array<Vector3r, 3> corners(const RoundedMesh& mesh, int t) {
 }  // namespace
 
 TriangleExits::TriangleExits(const RoundedMesh& mesh, Real reach)
-    : reach_(reach), first_(mesh.triangleCount() + 1, 0) {
+    : reach_(reach), nearest_(mesh.triangleCount()), first_(mesh.triangleCount() + 1, 0) {
   // Each triangle's bounding ball about its centroid, so that far triangles are passed over unmeasured.
   std::vector<Vector3r> centroid(mesh.triangleCount());
   std::vector<Real> ball(mesh.triangleCount());
@@ -38,13 +38,18 @@ TriangleExits::TriangleExits(const RoundedMesh& mesh, Real reach)
       if (j == i || (centroid[j] - centroid[i]).norm() - ball[i] - ball[j] > reach) return;
       const auto other = corners(mesh, j);
       if (!(std::min({normal.dot(other[0]), normal.dot(other[1]), normal.dot(other[2])}) < plane)) return;
-      // A j turned the same way as i (n_i . n_j = 1) is never crossed outward by a line that entered through i.
+      // The first level whose 90 deg - theta j is turned past: cos(angle) < sin(theta) = cos(90 deg - theta).
       const Real cosine = normal.dot(mesh.rounded(j).normal);
-      if (!(cosine < 1)) return;
+      int level = 0;
+      while (level < kLevels && !(cosine < kLevelSines[level])) ++level;
+      if (level == kLevels) return;
       const Real distance = triangleDistance(own, other);
-      if (distance <= reach) found.push_back({distance, cosine, j});
+      if (distance <= reach) found.push_back({distance, j, level});
     });
     std::sort(found.begin(), found.end(), [](const Exit& a, const Exit& b) { return a.distance < b.distance; });
+    nearest_[i].fill(reach);
+    for (const Exit& e : found)
+      for (int level = e.level; level < kLevels; ++level) nearest_[i][level] = std::min(nearest_[i][level], e.distance);
     exits_.insert(exits_.end(), found.begin(), found.end());
     first_[i + 1] = static_cast<int>(exits_.size());
   }
@@ -54,12 +59,11 @@ bool TriangleExits::keepsInside(const RoundedMesh& mesh, int t, const Vector3r& 
   const Vector3r direction = end - entry;
   const Real length = direction.norm();
   if (!(length <= reach_)) return false;
-  const Real cosine = -mesh.rounded(t).normal.dot(direction) / length;
-  const Real sine = std::sqrt(std::max(1 - cosine * cosine, Real(0)));
+  const int at = level(-mesh.rounded(t).normal.dot(direction) / length);
   const auto own = corners(mesh, t);
   const Vector3r shift = startWithin(own[0], own[1], own[2], entry);
   for (int k = first_[t]; k < first_[t + 1] && exits_[k].distance < length; ++k) {
-    if (!(exits_[k].cosine < sine)) continue;
+    if (exits_[k].level > at) continue;
     const auto exit = corners(mesh, exits_[k].triangle);
     if (crossing(entry + shift, end + shift, exit[0], exit[1], exit[2]) >= 0) return false;
   }

@@ -2,16 +2,14 @@
 // again, near where it entered (doc/physics.md, "Which triangle pairs touch"). A line entering through triangle i
 // at an angle theta to its inward normal runs below the plane of i, and leaves the solid only through a triangle j
 // that it crosses outward: j reaches below the plane of i, and its outward normal n_j has a positive component
-// along the line, so that n_i and n_j are more than 90 deg - theta apart:
-//   n_i . n_j < sin(theta).
-// Such a j is an exit of i at that angle; the line cannot reach it before it has run the distance between the two
-// triangles. For each triangle: the triangles below its plane within `reach` [m], nearest first, with n_i . n_j. A
-// segment that enters through i and crosses none of the exits it can reach stays inside: so a triangle pair's
-// overlap is tested exactly against a few triangles instead of followed through the whole mesh.
+// along the line, so n_i and n_j are more than 90 deg - theta apart. Such a j is an exit of i at that angle; the
+// line cannot reach it before it has run the distance between the two triangles. For each triangle, its exits
+// within `reach` [m], nearest first, each with the least of the angles theta (15, 30, ..., 90 deg) at which it
+// counts. A segment that enters through i and crosses none of the exits it can reach stays inside: so a triangle
+// pair's overlap is tested exactly against a few triangles instead of followed through the whole mesh.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
+#include <array>
 #include <vector>
 
 #include "pkg/common/Types.hpp"
@@ -22,18 +20,29 @@ class RoundedMesh;
 
 class TriangleExits {
  public:
+  static constexpr int kLevels = 6;
+  // cos of 15, 30, 45, 60, 75 and 90 deg: a line at theta counts exits from the first level with cos >= cos(theta).
+  static constexpr std::array<Real, kLevels> kLevelCosines{0.96592582628906831, 0.86602540378443865,
+                                                           0.70710678118654757, 0.5, 0.25881904510252074, 0};
+  // Their sines: j is an exit at a level if cos(n_i, n_j) < sin(theta) = cos(90 deg - theta).
+  static constexpr std::array<Real, kLevels> kLevelSines{0.25881904510252074, 0.5, 0.70710678118654757,
+                                                         0.86602540378443865, 0.96592582628906831, 1};
+
   TriangleExits() = default;
   TriangleExits(const RoundedMesh& mesh, Real reach);
 
   Real reach() const { return reach_; }
-  // Whether a line entering through triangle t at cos(theta) = cosine with its inward normal (0 < cosine <= 1)
-  // surely stays inside for `length` [m]: no exit at that angle is nearer.
-  bool clear(int t, Real cosine, Real length) const {
-    const Real sine = std::sqrt(std::max(1 - cosine * cosine, Real(0)));
-    for (int k = first_[t]; k < first_[t + 1] && exits_[k].distance < length; ++k)
-      if (exits_[k].cosine < sine) return false;
-    return length <= reach_;
+  // The level of a line entering at cos(theta) = cosine with the inward normal (cosine > 0: a line that enters).
+  static int level(Real cosine) {
+    int k = 0;
+    while (k < kLevels - 1 && cosine < kLevelCosines[k]) ++k;
+    return k;
   }
+  // How far such a line surely stays inside: the distance to the nearest exit of triangle t at that level, or
+  // reach() if none is nearer [m].
+  Real clearance(int t, Real cosine) const { return nearest_[t][level(cosine)]; }
+  // Whether such a line surely stays inside for `length` [m]: no exit at its angle is nearer.
+  bool clear(int t, Real cosine, Real length) const { return length < clearance(t, cosine); }
   // Whether the segment from `entry`, a point of triangle t, to `end` (below the plane of t) surely stays in the
   // flat solid: it is no longer than reach() and crosses none of t's exits at its angle. False: it leaves, or is
   // too long to tell.
@@ -41,12 +50,13 @@ class TriangleExits {
 
  private:
   struct Exit {
-    Real distance;  // between the two triangles [m]
-    Real cosine;    // n_i . n_j
+    Real distance;
     int triangle;
+    int level;
   };
   Real reach_ = 0;
-  std::vector<int> first_;  // triangle t's candidates are exits_[first_[t]], ..., exits_[first_[t + 1] - 1]
+  std::vector<std::array<Real, kLevels>> nearest_;
+  std::vector<int> first_;  // triangle t's exits are exits_[first_[t]], ..., exits_[first_[t + 1] - 1]
   std::vector<Exit> exits_;
 };
 

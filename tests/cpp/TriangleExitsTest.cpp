@@ -85,7 +85,7 @@ TEST(TriangleExits, AsBruteForceOnAMeshedSphere) { expectExitsAsBruteForce(icosp
 
 TEST(TriangleExits, AsBruteForceOnAFatTorus) { expectExitsAsBruteForce(flatTorus(1.0, 0.5, 48, 24), "fat torus"); }
 
-TEST(TriangleExits, AsBruteForceOnAThinTorus) { expectExitsAsBruteForce(flatTorus(1.0, 0.04, 64, 12), "thin torus", 500); }
+TEST(TriangleExits, AsBruteForceOnAThinTorus) { expectExitsAsBruteForce(flatTorus(1.0, 0.04, 64, 12), "thin torus", 400); }
 
 // The least distance of dense samples of both triangles (barycentric grids of step 1/n) exceeds the exact distance,
 // by at most the samples' spacing on each (the longest edge / n).
