@@ -233,7 +233,11 @@ def parse(argv):
     parser.add_argument("--tolerance", type=float, default=0.05, help="Mesh.load's tolerance [r_eq]")
     parser.add_argument("--meshes", nargs="+", choices=sorted(set(MESHES.values())), default=sorted(set(MESHES.values())))
     parser.add_argument("--output", default="out/coarse_clearance")
-    return parser.parse_args(argv)
+    args = parser.parse_args(argv)
+    for name in ("orientations", "gap", "tolerance"):
+        if not getattr(args, name) > 0:
+            parser.error(f"--{name}: expected a positive number, got {getattr(args, name)}")
+    return args
 
 
 def main(argv):

@@ -83,3 +83,12 @@ def test_placed_apart_by_least_distance():
     assert least > along
     assert cc.least_distance(v1, t, v2 + along * u, t, 0.01) < 1e-3
     assert cc.least_distance(v1, t, v2 + (along - 1e-3) * u, t, 0.01) == pytest.approx(0, abs=1e-12)
+
+
+@pytest.mark.parametrize("argv", [["--gap", "0"], ["--gap", "-1e-3"], ["--tolerance", "0"], ["--orientations", "0"],
+                                  ["--gap", "nan"]])
+def test_bad_arguments_are_refused(argv, capsys):
+    """A gap, tolerance or count that is not positive stops the study before it starts, naming the option."""
+    with pytest.raises(SystemExit):
+        cc.parse(argv)
+    assert argv[0] in capsys.readouterr().err
