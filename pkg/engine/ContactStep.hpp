@@ -72,6 +72,9 @@ struct StepReport {
 
 StepReport contactStep(const ContactModel& model, ContactData& data);
 
+// A time step up to this fraction above the stability limit counts as at the limit.
+constexpr Real kLimitRoundOff = 1e-9;
+
 // Stage 1: nullopt if data.timeStep is within the limit (or was for the same masses), else the limit.
 std::optional<StabilityLimit> checkTimeStep(const ContactModel& model, ContactData& data);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <variant>
 
 #include <Eigen/Eigenvalues>
 
@@ -20,11 +21,14 @@ namespace {
 struct Side {
   Real mass;
   Real radius;
-  Real lever;
+  Real lever;        // [1/kg], any direction at any contact point
+  Real normalLever;  // [1/kg], along the surface's normal there
   const HertzMaterial* material;
 
   // What a tangential force at a contact point moves (CriticalTimeStep.hpp).
   Real tangentialMass() const { return 1 / (1 / mass + lever); }
+  // What a normal force at a contact point moves.
+  Real normalMass() const { return 1 / (1 / mass + normalLever); }
 };
 
 // max over the mesh's vertices x of the largest eigenvalue of [x]^T I^-1 [x] ([x] the cross-product matrix, I the
@@ -58,7 +62,8 @@ StabilityLimit pairLimit(Side a, Side b, FrictionLaw law, Real impactSpeed) {
   const Real radius = std::isinf(b.radius) ? a.radius : a.radius * b.radius / (a.radius + b.radius);
   const Real overlap = kDeepestOverlap * std::min(a.radius, b.radius);
   limit.timeStep = std::min(
-      criticalTimeStep(reduced(a.mass, b.mass), phys.effectiveModulus, radius, phys.damping, overlap),
+      criticalTimeStep(reduced(a.normalMass(), b.mass > 0 ? b.normalMass() : 0), phys.effectiveModulus, radius,
+                       phys.damping, overlap),
       impactTimeStep(reduced(a.mass, b.mass), phys.effectiveModulus, radius, overlap, impactSpeed));
   if (phys.friction > 0) {
     const Real normalStiffness = hertzStiffnessAt(phys, radius, overlap);
@@ -93,6 +98,22 @@ Real partnerReach(const PartnerShape& shape) {
 
 }  // namespace
 
+Real normalLever(const RoundedMesh& mesh, const Vector3r& inertia) {
+  if (!(inertia.minCoeff() > 0)) return 0;
+  const Vector3r inverse = inertia.cwiseInverse();
+  auto along = [&](const Vector3r& x, const Vector3r& u) { return x.cross(u).cwiseAbs2().dot(inverse); };
+  Real lever = 0;
+  for (int t = 0; t < mesh.triangleCount(); ++t) {
+    const RoundedTriangle& cap = mesh.rounded(t);
+    lever = std::max(lever, along(cap.sphereCentre + cap.radius * cap.normal, cap.normal));
+    for (int corner : mesh.triangles()[t]) {
+      const Vector3r& x = mesh.vertices()[corner];
+      lever = std::max(lever, along(x, (x - cap.sphereCentre).normalized()));
+    }
+  }
+  return lever;
+}
+
 StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>& bodyMasses,
                               const std::vector<Real>& partnerMasses, const std::vector<Vector3r>& bodyInertias,
                               const std::vector<Vector3r>& partnerInertias, Real impactSpeed) {
@@ -101,22 +122,27 @@ StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>
   // Every side as an engine index (bodies, then partners), and which ones move through the engine's contacts:
   // rounded bodies and sphere bodies.
   const int count = bodyCount + static_cast<int>(model.partners.size());
-  std::vector<Real> levers(count, 0);
+  std::vector<Real> levers(count, 0), normalLevers(count, 0);
   for (int b = 0; b < bodyCount && !bodyInertias.empty(); ++b) {
     // Bodies sharing a mesh and inertia (the usual case) share the sweep over its vertices.
     int same = 0;
     while (same < b && !(model.bodies[same].mesh == model.bodies[b].mesh && bodyInertias[same] == bodyInertias[b]))
       ++same;
     levers[b] = same < b ? levers[same] : meshLever(*model.bodies[b].mesh, bodyInertias[b]);
+    normalLevers[b] = same < b ? normalLevers[same] : normalLever(*model.bodies[b].mesh, bodyInertias[b]);
   }
   for (int p = 0; p < count - bodyCount && !partnerInertias.empty(); ++p) {
-    const Real reach = partnerReach(model.partners[p].shape), inertia = partnerInertias[p].minCoeff();
+    const PartnerShape& shape = model.partners[p].shape;
+    const Real reach = partnerReach(shape), inertia = partnerInertias[p].minCoeff();
     levers[bodyCount + p] = inertia > 0 ? reach * reach / inertia : 0;
+    // A sphere's normal passes through its centre; a Box's or Facet's is bounded by any direction's.
+    normalLevers[bodyCount + p] = std::holds_alternative<Sphere>(shape) ? 0 : levers[bodyCount + p];
   }
   auto side = [&](int i) -> Side {
-    if (i < bodyCount) return {bodyMasses[i], model.bodies[i].equivalentRadius, levers[i], &model.bodies[i].material};
+    if (i < bodyCount)
+      return {bodyMasses[i], model.bodies[i].equivalentRadius, levers[i], normalLevers[i], &model.bodies[i].material};
     const Partner& partner = model.partners[i - bodyCount];
-    return {partnerMasses[i - bodyCount], partnerRadius(partner.shape), levers[i], &partner.material};
+    return {partnerMasses[i - bodyCount], partnerRadius(partner.shape), levers[i], normalLevers[i], &partner.material};
   };
   auto isBody = [&](int i) { return i < bodyCount || model.partners[i - bodyCount].sphereBody; };
   auto sameMaterial = [](const HertzMaterial& a, const HertzMaterial& b) {
@@ -131,7 +157,7 @@ StabilityLimit stabilityLimit(const ContactModel& model, const std::vector<Real>
     const bool seen = std::any_of(kinds.begin(), kinds.end(), [&](int k) {
       const Side o = side(k);
       return (k < bodyCount) == (b < bodyCount) && o.mass == s.mass && o.radius == s.radius && o.lever == s.lever &&
-             sameMaterial(*o.material, *s.material);
+             o.normalLever == s.normalLever && sameMaterial(*o.material, *s.material);
     });
     if (!seen) kinds.push_back(b);
   }

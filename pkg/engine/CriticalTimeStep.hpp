@@ -3,7 +3,11 @@
 //   omega = sqrt(k/m),   zeta = c / (2 m omega),   dt_crit = (2 / omega) (sqrt(1 + zeta^2) - zeta)
 // (the scheme's amplification matrix has spectral radius 1 there), 2 m / c for k = 0.
 // The normal contact is the damped Hertz contact of Eq. 7 linearised at overlap delta:
-//   k = dF/d(delta) = 2 E* sqrt(R* delta),   c = dF/d(ddelta/dt) = (2/3) A k,   so zeta = A omega / 3.
+//   k = dF/d(delta) = 2 E* sqrt(R* delta),   c = dF/d(ddelta/dt) = (2/3) A k,   so zeta = A omega / 3;
+// its mass is what a normal force at the contact point moves: 1/m_n = 1/m + max over the caps' corners and apexes x,
+// with the cap's normal u there, of |I^-1/2 (x cross u)|^2 (m for a sphere; m / 18 for YADE's GTS horse, m / 6.4 for
+// the gummy bear: a force on a limb turns the body). Heavily damped (zeta >> 1) the limit is about 2 m_n / c, so a
+// limb's contact sets it: leaving rotation out overestimated it 11 times for two horses (doc/physics.md, "Time step").
 // The tangential contact is the spring of TangentialSpring.hpp, k_t = (k_t/k_n) k, with the damping c of the
 // materials (FrictionLaw::Spring), or the viscous no-slip force alone, k_t = 0 (FrictionLaw::Viscous); its mass is
 // what a force at the contact point moves: 1/m_t = 1/m + max over contact points x and directions t of
@@ -51,12 +55,17 @@ inline Real criticalTimeStep(Real mass, Real effectiveModulus, Real radius, Real
   return leapFrogLimit(mass, stiffness, 2.0 / 3.0 * damping * stiffness);
 }
 
+// The normal lever of a rounded body: max over its caps' corners and apexes x, with the cap's outward normal u there,
+// of |I^-1/2 (x cross u)|^2 [1/kg], the most a unit normal force at a contact point accelerates that point along the
+// normal through the body's turn (0 for a sphere, whose normals pass through its centre). Inputs: the mesh in its
+// principal frame [m], its principal moments I [kg m^2]; 0 if one is not positive.
+Real normalLever(const RoundedMesh& mesh, const Vector3r& inertia);
+
 // The scene's limit: the normal and, with friction (mu > 0), the tangential limit over every pair a rounded body or
 // a sphere body can form (with another body or a partner), each rounded body taken as a sphere of its
 // volume-equivalent radius r, a partner as a plane or its sphere: R* = r1 r2 / (r1 + r2), reduced masses, at an
-// overlap of min(r1, r2) / 10, the deepest a Hertz contact is meant to go. An estimate for compact bodies: triangles
-// much flatter than r, an elongated body's lower effective mass when a normal contact also turns it, or several
-// contacts on one body, lower the true limit.
+// overlap of min(r1, r2) / 10, the deepest a Hertz contact is meant to go. An estimate: triangles much flatter than r,
+// or several contacts on one body, lower the true limit.
 // bodyMasses[b]: the rounded bodies' masses [kg]; partnerMasses[p]: the mass of a partner that moves
 // under forces, 0 for a driven or fixed one (also for a sphere body). bodyInertias, partnerInertias: their
 // principal moments of inertia [kg m^2] (a rounded body's in its mesh's frame), for the tangential mass; empty (or

@@ -3,7 +3,7 @@ soft bodies dropped in from a lattice, and run with the defaults. It is the hard
 plates, soft bodies and a real mesh, where the contact must keep repelling however deep an impact drives a body.
 
     /usr/bin/python3 scripts/validation/newuser_drum.py [--contents mixed|bears] [--run roundedmesh|clumps]
-        [--steps 20000] [--seed 1] [--threads 1] [--output out/newuser_drum]
+        [--duration 0.63 (mixed) | 1.67 (bears)] [--seed 1] [--threads 1] [--checkpoint-every 0] [--output out/newuser_drum]
 
 The drum: `geom.facetCylinder` of radius 0.27 m (0.54 m across) and length 0.4 m about the y axis, 24 panels, both
 ends closed; four lifters, radial plates 6 cm high of two Facets each (`utils.facet`), standing on the mantle's panel
@@ -14,19 +14,23 @@ YADE's GTS horses (examples/gts-horse/horse.coarse.gts, Debian's yade package, s
 Mesh.load) and 20 gummy bears (Mesh.reference_shape, r_eq 25 mm); or `bears`, 40 gummy bears. Placed on a lattice
 0.1 m apart inside the drum (48 nodes, the first 40 taken), horses and bears alternating, in seeded random orientations, at rest.
 Time step: the largest the user guide allows for impacts up to 3 m/s, O.dt = rm.critical_timestep(impact_speed=3)
-(mixed 3.15e-5 s, 20,000 steps 0.63 s; bears 8.3e-5 s, 1.67 s); default engine options.
+(mixed 2.07e-6 s: a push on a horse's limb turns it, doc/physics.md "Time step"; bears 4.43e-5 s); default engine
+options. Each runs for the simulated time its 20,000 steps covered before the limit counted the bodies' turn: mixed
+0.63 s (304,000 steps now), bears 1.67 s (37,700).
 
 --run clumps fills the same drum from the same poses with YADE's own bodies: each body a clump of 40 inscribed spheres
 (sphere_fill.inscribed_spheres of its mesh), the shape's mass and the union's inertia scaled to it
 (peers.add_clump), Hertz-Mindlin (Law2_ScGeom_MindlinPhys_Mindlin, betan 0.2, friction angle atan 0.5; the facets
 E = 100 MPa), Facets met by Ig2_Facet_Sphere_ScGeom, O.dt = 0.3 utils.PWaveTimeStep() (YADE's usual choice), run for
-the same simulated time as the roundedmesh run's 20,000 steps.
+the same simulated time.
 
 Every 10 steps it samples the deepest pair for its size (roundedmesh: rm.statistics()["deepest_pair_fraction"], the
 stop rule's measure; clumps: the deepest member contact, ScGeom.penetrationDepth, over the smaller body's r_eq, a
 facet counting as no size) and the fastest body [m/s]. Writes <output>/<contents>_<run>.csv (step, time [s],
 deepest [r_eq], fastest [m/s], wall ms per step over the sample) and, beside it, newuser_drum_<contents>.png of every run found there; prints whether
-the run completed, its deepest pair, fastest body and ms per step.
+the run completed, its deepest pair, fastest body and ms per step (the sampling left out). With --checkpoint-every N (roundedmesh only), the
+scene is saved every N steps to <output>/<contents>_<run>.yade.gz (rm.checkpoint), to resume a long run or study
+a moment of it.
 """
 import argparse
 import csv
@@ -53,19 +57,24 @@ FRICTION, WALL_FRICTION = 0.5, 0.4
 IMPACT_SPEED = 3.0                          # [m/s] the time step resolves impacts up to this speed
 SAMPLE = 10                                 # steps between samples
 CONTENTS = {"mixed": ("horse", "bear") * 20, "bears": ("bear",) * 40}
+DURATION = {"mixed": 0.63, "bears": 1.67}   # [s] simulated
 
 
 def parse(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--contents", choices=sorted(CONTENTS), default="mixed")
     parser.add_argument("--run", choices=["roundedmesh", "clumps"], default="roundedmesh")
-    parser.add_argument("--steps", type=int, default=20000)
+    parser.add_argument("--duration", type=float, default=None,
+                        help="simulated time [s] (default: mixed 0.63, bears 1.67)")
     parser.add_argument("--seed", type=int, default=1, help="of the orientations")
     parser.add_argument("--threads", type=int, default=1)
+    parser.add_argument("--checkpoint-every", type=int, default=0, help="steps between checkpoints (0: none)")
     parser.add_argument("--output", default=os.path.join("out", "newuser_drum"))
     args = parser.parse_args(argv)
-    if args.steps < 1 or args.threads < 1:
-        parser.error("--steps and --threads must be positive")
+    if args.duration is None:
+        args.duration = DURATION[args.contents]
+    if not args.duration > 0 or args.threads < 1 or args.checkpoint_every < 0:
+        parser.error("--duration and --threads must be positive, --checkpoint-every not negative")
     return args
 
 
@@ -181,37 +190,46 @@ def build_clumps(placed, meshes):
 
 
 def run(args):
-    from yade import O
+    from yade import O, PyRunner
     from roundedmesh.progress import Progress
     from .benchmarking import machine
     kinds = set(CONTENTS[args.contents])
     import roundedmesh as rm
     meshes = {kind: horse_mesh() if kind == "horse" else rm.Mesh.reference_shape("gummy_bear") for kind in kinds}
     placed = poses(args.contents, args.seed)
-    sizes, deepest = build_roundedmesh(placed, meshes)
-    steps = args.steps
-    if args.run == "clumps":  # the same simulated time
-        duration = args.steps * O.dt
-        sizes, deepest = build_clumps(placed, meshes)
-        steps = round(duration / O.dt)
-    os.environ["OMP_NUM_THREADS"] = str(args.threads)
+    build = build_roundedmesh if args.run == "roundedmesh" else build_clumps
+    sizes, deepest = build(placed, meshes)
+    steps = math.ceil(args.duration / O.dt - 1e-9)
+    os.makedirs(args.output, exist_ok=True)
     print(f"machine: {machine()}\nnew user's drum, {args.contents}, {args.run}: {len(sizes)} bodies, "
           f"O.dt = {O.dt:.3g} s, {steps} steps", flush=True)
     rows, failure = [], ""
     progress = Progress(steps, f"{args.contents} {args.run}")
+    sample = {"at": time.perf_counter(), "spent": 0.0}
+
+    def record():
+        """Samples the run at the end of every SAMPLE-th step (a PyRunner inside one O.run: O.run(n, True) in a loop
+        would add up to 40 ms per call while YADE notices the end of each run). The time per step leaves out the
+        sampling (the clumps' deepest contact is a Python loop over every interaction)."""
+        now, done = time.perf_counter(), O.iter + 1
+        fastest = max(O.bodies[b].state.vel.norm() for b in sizes)
+        rows.append((done, O.time + O.dt, deepest(), fastest, 1e3 * (now - sample["at"]) / SAMPLE))
+        progress.update(done)
+        sample["at"] = time.perf_counter()
+        sample["spent"] += sample["at"] - now
+    sys.modules["__main__"].newuser_drum_record = record  # PyRunner commands run in __main__
+    O.engines = O.engines + [PyRunner(command="newuser_drum_record()", iterPeriod=SAMPLE,
+                                       firstIterRun=SAMPLE - 1)]
+    if args.checkpoint_every and args.run == "roundedmesh":
+        path = os.path.join(args.output, f"{args.contents}_{args.run}.yade.gz")
+        O.engines = [rm.checkpoint.Checkpointer(path, every_steps=args.checkpoint_every).engine()] + O.engines
     start = time.perf_counter()
     try:
-        while O.iter < steps:
-            before = time.perf_counter()
-            O.run(min(SAMPLE, steps - O.iter), True)
-            fastest = max(O.bodies[b].state.vel.norm() for b in sizes)
-            rows.append((O.iter, O.time, deepest(), fastest, 1e3 * (time.perf_counter() - before) / SAMPLE))
-            progress.update(O.iter)
+        O.run(steps - O.iter, True)
     except RuntimeError as error:
         # YADE puts "PyRunner error." first and the engine's reason after it: keep them all.
         failure = " ".join(str(error).split())[:600]
-    seconds = time.perf_counter() - start
-    os.makedirs(args.output, exist_ok=True)
+    seconds = time.perf_counter() - start - sample["spent"]
     path = os.path.join(args.output, f"{args.contents}_{args.run}.csv")
     with open(path, "w", newline="") as f:
         f.write(f"# {machine()}\n# {' '.join([sys.executable] + sys.argv)}\n")
@@ -257,5 +275,8 @@ def plot(output, contents):
 
 
 def main(argv):
-    result = run(parse(argv))
+    args = parse(argv)
+    # Before YADE is imported: OpenMP reads it when it starts, for YADE's own loops (the clumps) as for roundedmesh.
+    os.environ["OMP_NUM_THREADS"] = str(args.threads)
+    result = run(args)
     return 0 if result["completed"] else 1

@@ -4,11 +4,11 @@ axis, and a hopper read from an STL file with `ymport.stl`. The bears are droppe
 orientations, and fall under gravity; roundedmesh welds each container's Facets into surfaces (doc/physics.md,
 "What each partner's surface is").
 
-    yade -n -x scripts/examples/example_containers.py --container box [--bodies 30] [--steps N] [--vtk out/box]
+    yade -n -x scripts/examples/example_containers.py --container box [--bodies 30] [--duration T] [--vtk out/box]
     /usr/bin/python3 scripts/examples/example_containers.py --container drum|hopper [the same options]
 
-O.dt is 0.3 of rm.critical_timestep for impacts at 3 m/s (2.5e-5 s). Default steps: box 40,000 (1 s), drum 20,000
-(0.5 s), hopper 60,000 (1.5 s). Prints progress and each 1000 steps' time per step, and at the end how many bears
+O.dt is 0.3 of rm.critical_timestep for impacts at 3 m/s (1.33e-5 s). Default simulated time: box 1 s (75,200 steps),
+drum 0.5 s (37,600), hopper 1.5 s (112,800). Prints progress and each 1000 steps' time per step, and at the end how many bears
 stayed inside and their highest speed; with --vtk, a ParaView series every 0.02 s of the bears and the container's
 Facets (open <vtk>/<container>.pvd).
 """
@@ -19,7 +19,7 @@ import sys
 import time
 
 CONTAINERS = ("box", "drum", "hopper")
-DEFAULT_STEPS = {"box": 40000, "drum": 20000, "hopper": 60000}
+DEFAULT_DURATION = {"box": 1.0, "drum": 0.5, "hopper": 1.5}  # [s] simulated
 HOPPER_STL = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "hopper.stl")
 SPACING = 0.1  # [m] between the lattice's nodes: a gummy bear (reference shape, r_eq 25 mm) reaches 48.5 mm from its
                # centre, so bears in any orientation start apart
@@ -117,7 +117,7 @@ def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--container", choices=CONTAINERS, required=True)
     parser.add_argument("--bodies", type=int, default=30, help="gummy bears (default 30)")
-    parser.add_argument("--steps", type=int, help="time steps (default: box 40000, drum 20000, hopper 60000)")
+    parser.add_argument("--duration", type=float, help="simulated time [s] (default: box 1, drum 0.5, hopper 1.5)")
     parser.add_argument("--seed", type=int, default=1, help="of the bears' orientations (default 1)")
     parser.add_argument("--vtk", help="folder for a ParaView series")
     parser.add_argument("--write-stl", action="store_true", help=f"write {HOPPER_STL} afresh and stop")
@@ -126,9 +126,9 @@ def main(argv):
         write_hopper_stl(HOPPER_STL)
         print(f"wrote {HOPPER_STL}")
         return 0
-    steps = DEFAULT_STEPS[args.container] if args.steps is None else args.steps
-    if steps < 1 or args.bodies < 1:
-        parser.error("--steps and --bodies must be positive")
+    duration = DEFAULT_DURATION[args.container] if args.duration is None else args.duration
+    if not duration > 0 or args.bodies < 1:
+        parser.error("--duration and --bodies must be positive")
 
     import numpy as np
     import roundedmesh as rm
@@ -156,6 +156,7 @@ def main(argv):
         bears.append(rm.add_body(bear, pos=node, ori=Quaternion(*(q / np.linalg.norm(q))), material=bear_material))
     O.engines = [ForceResetter()] + movers + [rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
     O.dt = min(1e-4, 0.3 * rm.critical_timestep(impact_speed=3.0))
+    steps = max(1, round(duration / O.dt))
 
     if args.vtk:
         global series  # PyRunner commands run in __main__, this script's namespace

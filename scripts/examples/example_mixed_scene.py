@@ -3,8 +3,8 @@ clump of two among them) settling in a box. YADE's InsertionSortCollider and Int
 contacts of the spheres among themselves and with the box; roundedmesh handles every contact of a rounded
 body, with the box, with another rounded body or with a sphere.
 
-    yade -n -x scripts/examples/example_mixed_scene.py [--steps 8000] [--vtk out/mixed]
-    /usr/bin/python3 scripts/examples/example_mixed_scene.py [--steps 8000] [--vtk out/mixed]
+    yade -n -x scripts/examples/example_mixed_scene.py [--steps 27000] [--vtk out/mixed]
+    /usr/bin/python3 scripts/examples/example_mixed_scene.py [--steps 27000] [--vtk out/mixed]
 
 The scene is the one of doc/user-guide.md, "A mixed scene". At the end it prints what the floor carries
 against the weight of everything in the box. With --vtk, a ParaView series (rounded bodies and spheres)
@@ -16,7 +16,7 @@ import sys
 
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--steps", type=int, default=8000, help="time steps to run (default 8000: 1.9 s)")
+    parser.add_argument("--steps", type=int, default=27000, help="time steps to run (default 27000: 1.9 s)")
     parser.add_argument("--vtk", help="folder for a ParaView series")
     args = parser.parse_args(argv)
     if args.steps < 1:

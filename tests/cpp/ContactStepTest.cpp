@@ -56,6 +56,13 @@ TEST(ContactStep, AStepAboveTheStabilityLimitComputesNothing) {
   EXPECT_TRUE(within.kept());
   EXPECT_LT(scene.data.bodyWrenches[0].force.z(), 0);  // pushed away from the other ball
 
+  // The limit itself, and the limit's rounding in another process (a restored mesh), are within it.
+  scene.data.timeStep = (1 + 1e-12) * scene.limit();
+  EXPECT_TRUE(contactStep(scene.model, scene.data).kept());
+  scene.data.timeStep = (1 + 1e-7) * scene.limit();
+  EXPECT_TRUE(contactStep(scene.model, scene.data).unstable);
+  scene.data.timeStep = 0.99 * scene.limit();
+
   // A lighter body lowers the limit: checked again, with the same time step.
   scene.data.bodyMasses[1] *= 0.5;
   const StepReport lighter = contactStep(scene.model, scene.data);

@@ -6,11 +6,14 @@
 
 #include <cmath>
 
+#include <Eigen/Eigenvalues>
+
 #include "pkg/engine/CriticalTimeStep.hpp"
 #include "pkg/engine/ContactStep.hpp"
 #include "pkg/engine/StopRules.hpp"
 #include "pkg/phys/HertzPhys.hpp"
 #include "pkg/meshing/BodyMesh.hpp"
+#include "pkg/meshing/Spheroid.hpp"
 #include "pkg/shape/Icosphere.hpp"
 #include "tests/cpp/TestSupport.hpp"
 
@@ -183,6 +186,81 @@ TEST(CriticalTimeStep, TheSceneLimitForAnImpactSpeed) {
   }
   EXPECT_EQ(stabilityLimit(scene.model, {m}, {0}, {}, {}, 1e-7).timeStep, plain.timeStep);
   EXPECT_LT(stabilityLimit(scene.model, {m}, {0}, {}, {}, 1e-5).timeStep, plain.timeStep);
+}
+
+// A normal force at a point x off the line through the centre of mass along the normal also turns the body: the
+// point moves as a mass m_n = 1 / (1/m + L^2 / I), L the distance of that line from the centre. The leap-frog of the
+// body's translation and turn together, pushed by the damped contact at that point (F = -(k s + c ds/dt), s = y + L
+// theta), has its spectral radius cross 1 at criticalTimeStep(m_n): for a horse's limb in the new user's drum
+// (newuser_drum.py, m = 4.3 g, I = 1.44e-7 kg m^2, A = 0.05 s) 13 times below the limit of its translation alone.
+TEST(CriticalTimeStep, ANormalContactAlsoTurnsTheBody) {
+  const Real m = 0.0043, I = 1.44e-7, E = 5.95e5, R = 0.0047, overlap = 0.00095;
+  for (Real A : {0.0, 0.05})
+    for (Real L : {0.0, 0.005, 0.025}) {
+      const Real normalMass = 1 / (1 / m + L * L / I);
+      const Real dtCrit = criticalTimeStep(normalMass, E, R, A, overlap);
+      const Real k = 2 * E * std::sqrt(R * overlap), c = 2.0 / 3 * A * k;
+      auto spectralRadius = [&](Real dt) {
+        // (v, w) at n - 1/2 and (y, theta) at n -> the same a step later; F from s and ds/dt as a row over them.
+        const Eigen::RowVector4d force(-c, -c * L, -k, -k * L);
+        Eigen::Matrix4d velocities = Eigen::Matrix4d::Identity(), positions = Eigen::Matrix4d::Identity();
+        velocities.row(0) += dt / m * force;
+        velocities.row(1) += dt * L / I * force;
+        positions(2, 0) = positions(3, 1) = dt;
+        return (positions * velocities).eigenvalues().cwiseAbs().maxCoeff();
+      };
+      // The free turn about the contact's line is a double eigenvalue 1 (a Jordan block), found to about 1e-8.
+      EXPECT_LE(spectralRadius(0.999 * dtCrit), 1 + 1e-6) << "A = " << A << ", L = " << L;
+      EXPECT_GT(spectralRadius(1.001 * dtCrit), 1 + 1e-4) << "A = " << A << ", L = " << L;
+    }
+  EXPECT_LT(13 * criticalTimeStep(1 / (1 / m + 0.025 * 0.025 / I), E, R, 0.05, overlap),
+            criticalTimeStep(m, E, R, 0.05, overlap));
+}
+
+// normalLever of a meshed prolate spheroid (a = 2b, 3000 nodes) is the exact spheroid's max over its surface of
+// |I^-1/2 (x cross n)|^2 (I its exact moments; by symmetry a meridian, sampled every 1e-5 rad), within what the mesh
+// changes: sqrt(lever) moves by at most (|x| eps + h) / sqrt(I_min), eps the largest angle between a cap's normal
+// and the spheroid's at the same point, h the tallest cap (its apex lies that far off the surface). A sphere's
+// normals pass through its centre: an icosphere's lever is 0 to round-off.
+TEST(CriticalTimeStep, TheNormalLeverOfARoundedBody) {
+  const Real a = 0.02, b = 0.01, density = 2000;
+  const BodyMesh body(spheroidSurface(a, b, 3000), std::nullopt);
+  const RoundedMesh& mesh = body.shape();
+  // The principal frame puts the long axis where the vertices reach farthest.
+  Vector3r reach = Vector3r::Zero();
+  for (const Vector3r& x : mesh.vertices()) reach = reach.cwiseMax(x.cwiseAbs());
+  int axis;
+  reach.maxCoeff(&axis);
+  Vector3r semiAxes = Vector3r::Constant(b);
+  semiAxes[axis] = a;
+  const Real m = density * 4 * M_PI / 3 * a * b * b;
+  Vector3r inertia = Vector3r::Constant(m * (a * a + b * b) / 5);
+  inertia[axis] = 2 * m * b * b / 5;
+  Real exact = 0;
+  for (Real phi = 0; phi <= M_PI; phi += 1e-5) {
+    const Real x = b * std::sin(phi), z = a * std::cos(phi);
+    const Vector2r n = Vector2r(std::sin(phi) / b, std::cos(phi) / a).normalized();
+    exact = std::max(exact, std::pow(z * n.x() - x * n.y(), 2) / inertia[(axis + 1) % 3]);
+  }
+  auto spheroidNormal = [&](const Vector3r& x) { return x.cwiseQuotient(semiAxes.cwiseAbs2()).normalized(); };
+  Real eps = 0, far = 0;
+  for (int t = 0; t < mesh.triangleCount(); ++t) {
+    const RoundedTriangle& cap = mesh.rounded(t);
+    const Vector3r apex = cap.sphereCentre + cap.radius * cap.normal;
+    eps = std::max(eps, std::acos(std::min(Real(1), cap.normal.dot(spheroidNormal(apex)))));
+    for (int corner : mesh.triangles()[t]) {
+      const Vector3r& x = mesh.vertices()[corner];
+      eps = std::max(eps, std::acos(std::min(Real(1), (x - cap.sphereCentre).normalized().dot(spheroidNormal(x)))));
+      far = std::max(far, x.norm());
+    }
+  }
+  const Real tolerance = (far * eps + mesh.maxCapHeight()) / std::sqrt(inertia.minCoeff());
+  const Real lever = normalLever(mesh, inertia);
+  EXPECT_NEAR(std::sqrt(lever), std::sqrt(exact), tolerance);  // 63.9 against 59.7 [1/kg]; eps = 2.5 deg
+  EXPECT_LT(tolerance, 0.2 * std::sqrt(exact)) << "the mesh is meant to resolve the lever";
+  EXPECT_NEAR(exact, 1 / m, 1e-6 / m) << "for a = 2b the largest normal lever turns the spheroid as much as it moves it";
+  const Real ballMass = kRubber.density * 4 * M_PI / 3 * std::pow(kRadius, 3);
+  EXPECT_LT(normalLever(ball().shape(), Vector3r::Constant(0.4 * ballMass * kRadius * kRadius)), 1e-12 / ballMass);
 }
 
 }  // namespace
