@@ -128,7 +128,7 @@ TEST_F(TrianglePairCandidates, ListsHoldEveryContactWithinTheirSkin) {
 // Past the Hertz range a list holds every contact the bodies can have (deepestPossible), and its near list takes the
 // pairs deeper than the Hertz range from the triangles whose caps reach the other body, through all five filters
 // (TrianglePairCandidates.hpp): two of the pairs above pushed 0.3 r_eq into each other along the line of their
-// centres.
+// centres. Their searches filter the pairs of reaching triangles in chunks of 65,536: 37 full chunks in all.
 TEST_F(TrianglePairCandidates, DeepListsHoldEveryContactWithinTheirSkin) {
   std::mt19937 rng(11);
   for (size_t k = 0; k < 2; ++k) {
