@@ -6,6 +6,7 @@
 
 #include "pkg/bound/BatchedCandidates.hpp"
 #include "pkg/bound/CapReach.hpp"
+#include "pkg/shape/TriangleCorners.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -55,15 +56,6 @@ Real distanceFromOrigin(const std::array<Vector2r, 3>& t) {
   return inside ? 0 : best;
 }
 
-}  // namespace
-
-namespace {
-
-std::array<Vector3r, 3> corners(const RoundedMesh& mesh, int t) {
-  const Triangle& c = mesh.triangles()[t];
-  return {mesh.vertices()[c[0]], mesh.vertices()[c[1]], mesh.vertices()[c[2]]};
-}
-
 // Filters 2-4 for triangles p and q (q placed in mesh 1's frame). With `full`, also filter 5.
 bool canTouch(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& rotation,
               const Vector3r& translation, Real skin, Real reach, bool full) {
@@ -109,8 +101,8 @@ bool canTouch(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, 
   }
   // Then the projected triangles themselves, on the plane now.
   const Vector3r u = n.unitOrthogonal(), v = n.cross(u);
-  const std::array<Vector3r, 3> xp = corners(mesh1, s);
-  std::array<Vector3r, 3> xq = corners(mesh2, t);
+  const std::array<Vector3r, 3> xp = triangleCorners(mesh1, s);
+  std::array<Vector3r, 3> xq = triangleCorners(mesh2, t);
   for (Vector3r& x : xq) x = rotation * x + translation;
   Real far = 0;
   for (int i = 0; i < 3; ++i) far = std::max({far, (xp[i] - c).norm(), (xq[i] - c).norm()});

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "pkg/math/SegmentCrossing.hpp"
+#include "pkg/shape/TriangleCorners.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -18,8 +19,8 @@ struct Crossing {
 // box meets the path's, tested exactly), in order along it; in a buffer of the thread's, kept between calls.
 const std::vector<Crossing>& crossings(const RoundedMesh& mesh, int s, const Vector3r& from, const Vector3r& x,
                                        Vector3r& a, Vector3r& b) {
-  const Triangle& own = mesh.triangles()[s];
-  const Vector3r shift = startWithin(mesh.vertices()[own[0]], mesh.vertices()[own[1]], mesh.vertices()[own[2]], from);
+  const auto own = triangleCorners(mesh, s);
+  const Vector3r shift = startWithin(own[0], own[1], own[2], from);
   a = from + shift;
   b = x + shift;
   const AlignedBox3r path = AlignedBox3r(a.cwiseMin(b), a.cwiseMax(b));
@@ -102,7 +103,8 @@ bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2,
       if (!insidePlaced(body2, x) || !insideRoundedSolid(mesh1, x)) return false;
     }
   }
-  return (sure1 || pathStaysInsideBody(mesh1, s, entry1, q2)) && (sure2 || pathStaysInsideBody(body2.mesh, t, entry2, end2));
+  return (sure1 || pathStaysInsideBody(mesh1, s, entry1, q2)) &&
+         (sure2 || pathStaysInsideBody(body2.mesh, t, entry2, end2));
 }
 
 }  // namespace roundedmesh

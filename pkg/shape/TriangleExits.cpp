@@ -5,16 +5,9 @@
 #include "pkg/math/SegmentCrossing.hpp"
 #include "pkg/math/TriangleDistance.hpp"
 #include "pkg/shape/RoundedMesh.hpp"
+#include "pkg/shape/TriangleCorners.hpp"
 
 namespace roundedmesh {
-namespace {
-
-std::array<Vector3r, 3> corners(const RoundedMesh& mesh, int t) {
-  const Triangle& c = mesh.triangles()[t];
-  return {mesh.vertices()[c[0]], mesh.vertices()[c[1]], mesh.vertices()[c[2]]};
-}
-
-}  // namespace
 
 TriangleExits::TriangleExits(const RoundedMesh& mesh, Real reach)
     : reach_(reach), nearest_(mesh.triangleCount()), first_(mesh.triangleCount() + 1, 0) {
@@ -22,13 +15,13 @@ TriangleExits::TriangleExits(const RoundedMesh& mesh, Real reach)
   std::vector<Vector3r> centroid(mesh.triangleCount());
   std::vector<Real> ball(mesh.triangleCount());
   for (int t = 0; t < mesh.triangleCount(); ++t) {
-    const auto p = corners(mesh, t);
+    const auto p = triangleCorners(mesh, t);
     centroid[t] = (p[0] + p[1] + p[2]) / 3;
     ball[t] = std::max({(p[0] - centroid[t]).norm(), (p[1] - centroid[t]).norm(), (p[2] - centroid[t]).norm()});
   }
   std::vector<Exit> found;
   for (int i = 0; i < mesh.triangleCount(); ++i) {
-    const auto own = corners(mesh, i);
+    const auto own = triangleCorners(mesh, i);
     const Vector3r& normal = mesh.rounded(i).normal;
     const Real plane = normal.dot(own[0]);
     const AlignedBox3r box(own[0].cwiseMin(own[1]).cwiseMin(own[2]).array() - reach,
@@ -36,7 +29,7 @@ TriangleExits::TriangleExits(const RoundedMesh& mesh, Real reach)
     found.clear();
     mesh.tree().query([&](const AlignedBox3r& node) { return node.intersects(box); }, [&](int j) {
       if (j == i || (centroid[j] - centroid[i]).norm() - ball[i] - ball[j] > reach) return;
-      const auto other = corners(mesh, j);
+      const auto other = triangleCorners(mesh, j);
       if (!(std::min({normal.dot(other[0]), normal.dot(other[1]), normal.dot(other[2])}) < plane)) return;
       // The first level whose 90 deg - theta j is turned past: cos(angle) < sin(theta) = cos(90 deg - theta).
       const Real cosine = normal.dot(mesh.rounded(j).normal);
@@ -60,11 +53,11 @@ bool TriangleExits::keepsInside(const RoundedMesh& mesh, int t, const Vector3r& 
   const Real length = direction.norm();
   if (!(length <= reach_)) return false;
   const int at = level(-mesh.rounded(t).normal.dot(direction) / length);
-  const auto own = corners(mesh, t);
+  const auto own = triangleCorners(mesh, t);
   const Vector3r shift = startWithin(own[0], own[1], own[2], entry);
   for (int k = first_[t]; k < first_[t + 1] && exits_[k].distance < length; ++k) {
     if (exits_[k].level > at) continue;
-    const auto exit = corners(mesh, exits_[k].triangle);
+    const auto exit = triangleCorners(mesh, exits_[k].triangle);
     if (crossing(entry + shift, end + shift, exit[0], exit[1], exit[2]) >= 0) return false;
   }
   return true;

@@ -156,7 +156,7 @@ def main(argv):
         bears.append(rm.add_body(bear, pos=node, ori=Quaternion(*(q / np.linalg.norm(q))), material=bear_material))
     O.engines = [ForceResetter()] + movers + [rm.engine(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0)]
     O.dt = min(1e-4, 0.3 * rm.critical_timestep(impact_speed=3.0))
-    steps = max(1, round(duration / O.dt))
+    steps = math.ceil(duration / O.dt - 1e-9)
 
     if args.vtk:
         global series  # PyRunner commands run in __main__, this script's namespace

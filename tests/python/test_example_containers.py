@@ -40,3 +40,9 @@ def test_the_hopper_file_is_what_the_script_writes(tmp_path):
         sys.path.pop(0)
     with open(example_containers.HOPPER_STL) as shipped:
         assert path.read_text() == shipped.read()
+
+
+def test_a_duration_that_is_not_positive_is_refused():
+    out = subprocess.run([sys.executable, SCRIPT, "--container", "box", "--duration", "0"], capture_output=True,
+                         text=True, timeout=60)
+    assert out.returncode == 2 and "--duration and --bodies must be positive" in out.stderr, out.stderr
