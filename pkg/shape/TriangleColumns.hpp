@@ -19,6 +19,7 @@ struct TriangleColumns {
   std::vector<Real> radius;                // R of the encompassing sphere
   std::vector<Real> sphereCentreDistance;  // |sphereCentre|, from the body's origin
   std::vector<Real> normal[3];
+  std::vector<Real> corner[3][3];          // corner i's coordinate k (triangleCorners)
   Real largestRadius = 0;                  // the largest R: the scale of the numbers a test of these triangles forms
 };
 
