@@ -2,9 +2,11 @@
 // (architecture.md). Triangle t's box holds its corners and its cap, the part of its encompassing sphere
 // beyond the triangle's plane where contact pressure acts: the corners' box inflated on every side by the
 // cap height R - sqrt(R^2 - rho^2) (rho the circumradius). A node's box holds its children's.
-// Queries never allocate: traversal runs on a fixed stack (the median split keeps the depth at log2(n)).
+// Queries allocate only to grow a thread's cache: traversal runs on a fixed stack (the median split keeps the depth
+// at log2(n)).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -91,6 +93,29 @@ void TriangleTree::queryPairs(const TriangleTree& a, const TriangleTree& b, cons
     const Vector3r half = (absRotation * (0.5 * box.sizes())).array() + margin;
     return AlignedBox3r(centre - half, centre + half);
   };
+  // b's boxes in a's frame, each placed once per query however many of a's nodes it meets (a thread's cache,
+  // stamped with the query it belongs to).
+  struct Placed {
+    std::vector<AlignedBox3r> boxes;
+    std::vector<unsigned> stamps;
+  };
+  thread_local Placed placedNodes, placedTriangles;
+  thread_local unsigned stamp = 0;
+  if (++stamp == 0) {
+    for (Placed* placed : {&placedNodes, &placedTriangles}) std::fill(placed->stamps.begin(), placed->stamps.end(), 0u);
+    stamp = 1;
+  }
+  auto place = [&](Placed& placed, size_t count, int index, const AlignedBox3r& box) -> const AlignedBox3r& {
+    if (placed.stamps.size() < count) {
+      placed.stamps.resize(count, 0u);
+      placed.boxes.resize(count);
+    }
+    if (placed.stamps[index] != stamp) {
+      placed.boxes[index] = moved(box);
+      placed.stamps[index] = stamp;
+    }
+    return placed.boxes[index];
+  };
   std::array<std::array<int, 2>, kStackSize> stack;
   int top = 0;
   stack[top++] = {0, 0};
@@ -98,12 +123,11 @@ void TriangleTree::queryPairs(const TriangleTree& a, const TriangleTree& b, cons
     const auto [i, j] = stack[--top];
     const Node& na = a.nodes_[i];
     const Node& nb = b.nodes_[j];
-    const AlignedBox3r boxB = moved(nb.box);
-    if (!na.box.intersects(boxB)) continue;
+    if (!na.box.intersects(place(placedNodes, b.nodes_.size(), j, nb.box))) continue;
     if (na.count > 0 && nb.count > 0) {
       for (int q = nb.first; q < nb.first + nb.count; ++q) {
         const int t = b.order_[q];
-        const AlignedBox3r triangleB = moved(b.boxes_[t]);
+        const AlignedBox3r& triangleB = place(placedTriangles, b.boxes_.size(), t, b.boxes_[t]);
         for (int p = na.first; p < na.first + na.count; ++p)
           if (a.boxes_[a.order_[p]].intersects(triangleB)) visit(a.order_[p], t);
       }

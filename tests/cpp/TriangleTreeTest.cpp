@@ -43,12 +43,15 @@ TEST(TriangleTree, QueryFindsWhatBruteForceFinds) {
   }
 }
 
+// Against two partners in turn, a coarse and a fine one, at random poses: a query's boxes placed in a's frame (kept
+// between the node pairs that meet them) carry over neither to the next pose nor to the other partner.
 TEST(TriangleTree, PairQueryFindsWhatBruteForceFinds) {
-  const RoundedMesh a = icosphere(1.0, 3), b = icosphere(0.7, 2);
+  const RoundedMesh a = icosphere(1.0, 3), coarse = icosphere(0.7, 2), fine = icosphere(0.5, 3);
   std::mt19937 rng(5);
   std::uniform_real_distribution<Real> uniform(-1.8, 1.8);
   int nonEmpty = 0;
   for (int trial = 0; trial < 30; ++trial) {
+    const RoundedMesh& b = trial % 3 == 1 ? fine : coarse;
     const Matrix3r rotation = randomRotation(rng);
     const Vector3r translation(uniform(rng), uniform(rng), uniform(rng));
     std::set<std::pair<int, int>> expected, found;
