@@ -9,6 +9,39 @@
 namespace roundedmesh {
 namespace {
 
+// An edge is rounded only while 1 + cos(theta) > kFoldedBack, theta the angle between its faces' outward normals: its
+// axis then lies at most rho sqrt(2 / kFoldedBack) from the edge.
+constexpr Real kFoldedBack = 1e-3;
+
+// Whether the queries of faceGeometry and featureGeometry can test any of the body's triangles: the root of its tree
+// must pass the first test of one of them. The face's query tests the boxes that reach its plane from the body's side
+// (n12 pointing from the body into the facet) and reach inside each edge line of its region, which lies in the
+// facet's own triangle (a panel's member keeps only the contacts over it; a facet alone, or alone in its panel, clips
+// S to its outline, the triangle moved in), with a margin of 1e-6 of the region's size (here of the triangle's
+// perimeter, which is larger). A strip's query tests the boxes within featureReach of its axis. Most facets whose
+// bounds a body's bound meets lie beside it or beyond its reach.
+bool treeMayReach(const RoundedMesh& mesh, const PlacedFacet& facet, const Vector3r& n12, Real edgeRadius) {
+  const AlignedBox3r& root = mesh.tree().nodes().front().box;
+  const Vector3r centre = root.center(), half = 0.5 * root.sizes();
+  const std::array<Vector3r, 3>& corners = facet.corners;
+  const Real stripReach = featureReach(mesh, edgeRadius) + std::sqrt(2 / kFoldedBack) * edgeRadius + half.norm();
+  Real perimeter = 0;
+  for (int e = 0; e < 3; ++e) {
+    const Vector3r &a = corners[e], &b = corners[(e + 1) % 3];
+    if (facet.weld && facet.weld->ownsStrip[e] && (centre - closestOnSegment(centre, a, b)).norm() <= stripReach)
+      return true;
+    perimeter += (b - a).norm();
+  }
+  if (!(n12.dot(centre - corners[0]) > -n12.cwiseAbs().dot(half))) return false;  // all in front of the plane
+  for (int e = 0; e < 3; ++e) {
+    const Vector3r &a = corners[e], &b = corners[(e + 1) % 3], &opposite = corners[(e + 2) % 3];
+    Vector3r inward = n12.cross(b - a).normalized();
+    if (inward.dot(opposite - a) < 0) inward = -inward;
+    if (inward.dot(centre - a) + inward.cwiseAbs().dot(half) < -1e-6 * perimeter) return false;
+  }
+  return true;
+}
+
 // The side of the surface the body's centre (the origin) is on, seen from this facet: the side of its plane, unless
 // the centre lies behind the plane past an edge that is convex from the other side, and in front of the facets beyond
 // that edge: then it is outside a ridge (above a lifter's apex, past its plane's reach), on the other side.
@@ -67,6 +100,7 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFac
   face.tangent1 = face.normal.unitOrthogonal();
   face.tangent2 = face.normal.cross(face.tangent1);
   face.sheet = true;
+  if (!treeMayReach(mesh, facet, face.normal, edgeRadius)) return;
   const FacetWeld* weld = facet.weld;
   if (!weld) {
     const ConvexPolygon triangle = ConvexPolygon::triangle(
@@ -87,7 +121,7 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFac
     Vector3r other = (beyond.allFinite() ? (b - a).cross(beyond - a) : (b - a).cross(outward)).normalized();
     if (other.dot(inside - a) > 0) other = -other;
     const Real cosine = outward.dot(other);
-    if (!(1 + cosine > 1e-3)) return std::nullopt;
+    if (!(1 + cosine > kFoldedBack)) return std::nullopt;
     const Vector3r axisOffset = edgeRadius * (outward + other) / (1 + cosine);
     return RoundedFeature{a - axisOffset, b - axisOffset, edgeRadius, {outward, other}};
   };

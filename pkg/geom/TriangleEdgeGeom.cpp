@@ -139,6 +139,8 @@ GeomTest triangleFeatureGeom(const RoundedMesh& mesh, int triangle, const Rounde
   return {Rejection::None};
 }
 
+Real featureReach(const RoundedMesh& mesh, Real radius) { return radius + kSwallowed * mesh.sphereBoundRadius(); }
+
 void featureGeometry(const RoundedMesh& mesh, const RoundedFeature& feature, const RelativeMotion& motion,
                      GeomOutput out, CurvatureModel model) {
   // A cap can touch the cylinder only if its box comes within rho of the axis segment (S is clipped to the segment
@@ -146,7 +148,7 @@ void featureGeometry(const RoundedMesh& mesh, const RoundedFeature& feature, con
   // diagonal of the segment, a box or node of the tree being tested by the same bound.
   const Vector3r along = feature.end - feature.start;
   const Real lengthSq = along.squaredNorm();
-  const Real capReach = feature.radius + kSwallowed * mesh.sphereBoundRadius();
+  const Real capReach = featureReach(mesh, feature.radius);
   auto nearSegment = [&](const AlignedBox3r& box) {
     const Vector3r centre = box.center();
     const Real t = lengthSq > 0 ? std::clamp((centre - feature.start).dot(along) / lengthSq, Real(0), Real(1)) : 0;

@@ -35,7 +35,11 @@ GeomTest triangleFeatureGeom(const RoundedMesh& mesh, int triangle, const Rounde
                              const RelativeMotion& motion, PressureGeom& geom,
                              CurvatureModel model = CurvatureModel::Mean);
 
-// triangleFeatureGeom for every triangle whose cap box comes within the radius of the feature's axis segment.
+// How far from a feature's axis segment (or centre) a cap can touch it [m]: its radius, plus how deep behind a cap a
+// swallowed axis may lie (triangleFeatureGeom).
+Real featureReach(const RoundedMesh& mesh, Real radius);
+
+// triangleFeatureGeom for every triangle whose cap box comes within featureReach of the feature's axis segment.
 void featureGeometry(const RoundedMesh& mesh, const RoundedFeature& feature, const RelativeMotion& motion,
                      GeomOutput out, CurvatureModel model = CurvatureModel::Mean);
 

@@ -1,6 +1,7 @@
 #include "pkg/geom/TrianglePlaneGeom.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -94,6 +95,14 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
 
 namespace {
 
+// An edge line of a face's region in body 1's frame: a box reaches inside it where its farthest corner along `inward`
+// does, inward . centre + spread . half-sizes >= offset (spread = |inward| componentwise).
+struct RegionSide {
+  Vector3r inward, spread;
+  Real offset;
+};
+constexpr int kRegionSides = 8;
+
 // How far p, inside a convex outline, lies from its nearest open edge, with the edge's slack (infinity if none is
 // open).
 Real distanceToOpenEdge(const FaceOutline& outline, const Vector2r& p) {
@@ -132,30 +141,42 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
     return behind > -half && behind - half <= deepest;
   };
   // A cap whose projection meets the outline (or the part of it whose contacts the face keeps) lies in the prism over
-  // it, as deep on either side as the body is wide: its box's AABB for the tree's nodes, and for a triangle its box's
-  // centre projected on the plane within half its diagonal of every edge's line.
+  // it, as deep on either side as the body is wide: a box (a node's, or a triangle's) that holds such a cap meets that
+  // prism's AABB, and reaches inside each edge's line, its farthest corner along the line's inward normal (in the
+  // plane) on the inner side. A contact's c_eff lies in S, the projection of a point of its triangle, and a panel's
+  // member keeps it up to 1e-9 of its size outside its own triangle (facetOwns): the lines are moved out by 1e-6 of the
+  // region's size for that and for round-off.
   AlignedBox3r prism(Vector3r::Constant(-std::numeric_limits<Real>::infinity()),
                      Vector3r::Constant(std::numeric_limits<Real>::infinity()));
   const FaceOutline* region = face.owned ? face.owned : face.faceOutline;
+  std::array<RegionSide, kRegionSides> sides;
+  int sideCount = 0;
   if (region) {
     prism.setEmpty();
     const Real reach = 2 * mesh.sphereBoundRadius();
+    Eigen::AlignedBox<Real, 2> extent;
     for (const Vector2r& x : region->corners) {
       const Vector3r corner = face.origin + x.x() * face.tangent1 + x.y() * face.tangent2;
       prism.extend(corner + reach * face.normal).extend(corner - reach * face.normal);
+      extent.extend(x);
+    }
+    const Real margin = 1e-6 * extent.sizes().norm();
+    // A region of more edges is bounded by its first kRegionSides.
+    for (int i = 0; i < static_cast<int>(region->lines.size()) && sideCount < kRegionSides; ++i) {
+      const FaceOutline::Line& line = region->lines[i];
+      const Vector3r inward = line.inward.x() * face.tangent1 + line.inward.y() * face.tangent2;
+      sides[sideCount++] = {inward, inward.cwiseAbs(), line.offset + inward.dot(face.origin) - margin};
     }
   }
   auto overRegion = [&](const AlignedBox3r& box) {
-    if (!region) return true;
-    const Vector2r centre = faceCoordinates(face, box.center());
-    const Real half = 0.5 * box.sizes().norm();
-    for (const FaceOutline::Line& line : region->lines)
-      if (line.inward.dot(centre) - line.offset < -half) return false;
+    const Vector3r centre = box.center(), half = 0.5 * box.sizes();
+    for (int i = 0; i < sideCount; ++i)
+      if (sides[i].inward.dot(centre) + sides[i].spread.dot(half) < sides[i].offset) return false;
     return true;
   };
   PressureGeom geom;
-  mesh.tree().query([&](const AlignedBox3r& box) { return reachesPlane(box) && box.intersects(prism); }, [&](int t) {
-    if (!overRegion(mesh.tree().triangleBox(t))) return;
+  auto reachable = [&](const AlignedBox3r& box) { return reachesPlane(box) && box.intersects(prism) && overRegion(box); };
+  mesh.tree().query(reachable, [&](int t) {
     GeomTest result = trianglePlaneGeom(mesh, t, face, motion, geom, model);
     if (result && face.owns && !face.owns(faceCoordinates(face, planePoint(geom, geom.effectivePoint)))) return;
     if (result && face.sheet) {

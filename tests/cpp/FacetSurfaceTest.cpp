@@ -206,13 +206,9 @@ TEST(FacetSurface, EveryPointOfAPanelHasExactlyOneOwner) {
 }
 
 Wrench onSurface(const RoundedBody& body, const BodyState& state, const std::vector<Corners>& facets) {
-  std::vector<Partner> partners;
-  std::vector<BodyState> states;
-  for (size_t f = 0; f < facets.size(); ++f) {
-    partners.push_back({static_cast<int>(f), Facet{facets[f], nullptr}, kFloor});
-    states.push_back(at(Vector3r::Zero()));
-  }
-  return surfaceContact(body, state, partners, states, EngineOptions()).onFirst;
+  return surfaceContact(body, state, test::facetPartners(facets, kFloor),
+                        std::vector<BodyState>(facets.size(), at(Vector3r::Zero())), EngineOptions())
+      .onFirst;
 }
 
 Wrench onWall(const RoundedBody& body, const BodyState& state) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "pkg/engine/BodyState.hpp"
+#include "pkg/engine/ContactModel.hpp"
 #include "pkg/math/ConvexPolygon.hpp"
 #include "pkg/shape/TriangleSurface.hpp"
 
@@ -46,7 +48,6 @@ inline TriangleSurface torus(Real R, Real r, int around, int tube) {
   return s;
 }
 
-// Gauss-Legendre nodes and weights on [-1, 1] (Newton iteration on the Legendre polynomial).
 // A body state at `position` turned by `orientation`, at rest.
 inline BodyState at(const Vector3r& position, const Quaternionr& orientation = Quaternionr::Identity()) {
   BodyState s;
@@ -55,6 +56,16 @@ inline BodyState at(const Vector3r& position, const Quaternionr& orientation = Q
   return s;
 }
 
+// Facets with these corners (in the world's frame: each facet's state is at(0)) as one body's partners of `material`,
+// their ids their indices, for surfaceContact, which welds them into surfaces.
+inline std::vector<Partner> facetPartners(const std::vector<std::array<Vector3r, 3>>& facets,
+                                          const HertzMaterial& material) {
+  std::vector<Partner> partners;
+  for (size_t f = 0; f < facets.size(); ++f) partners.push_back({static_cast<int>(f), Facet{facets[f], nullptr}, material});
+  return partners;
+}
+
+// Gauss-Legendre nodes and weights on [-1, 1] (Newton iteration on the Legendre polynomial).
 inline void gaussLegendre(int n, std::vector<Real>& x, std::vector<Real>& w) {
   x.resize(n);
   w.resize(n);
