@@ -65,8 +65,11 @@ Real sideSize(const ContactModel& model, int index) {
 std::vector<StopReason> checkStopRules(const ContactModel& model, ContactData& data) {
   std::vector<StopReason> stops;
   std::vector<PairRecord>& records = data.pairRecords;
-  records.resize(data.pairs.size());
-  for (size_t k = 0; k < data.pairs.size(); ++k) {
+  const int pairCount = static_cast<int>(data.pairs.size());
+  records.resize(pairCount);
+  // Each pair's record alone, in parallel (a Facet's side costs it its corners); the searches below in order.
+#pragma omp parallel for schedule(static) if (pairCount > 1)
+  for (int k = 0; k < pairCount; ++k) {
     const BodyPair& pair = data.pairs[k];
     PairRecord& r = records[k];
     r.body = pair.body;
@@ -94,17 +97,24 @@ std::vector<StopReason> checkStopRules(const ContactModel& model, ContactData& d
       stops.push_back({StopCause::Overlap, r.body, r.other, r.overlap, size, r.point});
   }
   // Every flat partner a body was near in the last step, whether or not their bounds still overlap.
-  for (const PairRecord& r : last) {
+  const int lastCount = static_cast<int>(last.size());
+  std::vector<char> through(lastCount, 0);
+#pragma omp parallel for schedule(static) if (lastCount > 1)
+  for (int k = 0; k < lastCount; ++k) {
+    const PairRecord& r = last[k];
     if (!r.flat) continue;
     const PartnerShape& shape = *partnerShape(model, r.other);
     const BodyState& partner = data.state(r.other);
     const Vector3r& now = data.state(r.body).position;
-    if (crossed(shape, partner, r.position, r.side, now, faceSide(shape, partner, now))) {
-      const auto found = std::lower_bound(records.begin(), records.end(), r, before);
-      const bool touching = found != records.end() && !before(r, *found);
-      stops.push_back({StopCause::CentreCrossed, r.body, r.other, touching ? found->overlap : 0,
-                            sideSize(model, r.body), touching ? found->point : now});
-    }
+    through[k] = crossed(shape, partner, r.position, r.side, now, faceSide(shape, partner, now));
+  }
+  for (int k = 0; k < lastCount; ++k) {
+    if (!through[k]) continue;
+    const PairRecord& r = last[k];
+    const auto found = std::lower_bound(records.begin(), records.end(), r, before);
+    const bool touching = found != records.end() && !before(r, *found);
+    stops.push_back({StopCause::CentreCrossed, r.body, r.other, touching ? found->overlap : 0, sideSize(model, r.body),
+                     touching ? found->point : data.state(r.body).position});
   }
   // Crossings first, then the deepest overlap for its size.
   std::stable_sort(stops.begin(), stops.end(), [](const StopReason& a, const StopReason& b) {

@@ -9,6 +9,24 @@
 namespace roundedmesh::python {
 namespace {
 
+bp::object interned(const char* text) { return bp::object(bp::handle<>(PyUnicode_InternFromString(text))); }
+
+// The attributes read of every body in every step, their names made once and interned: a lookup by a C string makes
+// and hashes a new Python string each time. Never freed, so that none is released after the interpreter has ended.
+struct AttributeNames {
+  bp::object state, pos, ori, vel, angVel, clumpId, dynamic, mass, inertia, material, label, subdomain, shape, type,
+      typeName, vertices;
+};
+
+const AttributeNames& names() {
+  static const AttributeNames* const made = new AttributeNames{
+      interned("state"),   interned("pos"),      interned("ori"),       interned("vel"),     interned("angVel"),
+      interned("clumpId"), interned("dynamic"),  interned("mass"),      interned("inertia"), interned("material"),
+      interned("label"),   interned("subdomain"), interned("shape"),    interned("__class__"), interned("__name__"),
+      interned("vertices")};
+  return *made;
+}
+
 // O.bodies[id], or None if the id is out of range or the body was erased.
 bp::object bodyOrNone(const bp::object& bodies, int id) {
   try {
@@ -24,15 +42,16 @@ bp::object bodyOrNone(const bp::object& bodies, int id) {
 // otherwise spread silently through every contact of the body.
 void readState(const bp::object& body, int id, bool dynamicOnly, BodyState& state, int& clump, Real& mass,
                Vector3r& inertia) {
-  const bp::object s = body.attr("state");
-  state.position = bp::extract<Vector3r>(s.attr("pos"));
-  state.orientation = bp::extract<Quaternionr>(s.attr("ori"));
-  state.velocity = bp::extract<Vector3r>(s.attr("vel"));
-  state.angularVelocity = bp::extract<Vector3r>(s.attr("angVel"));
-  clump = bp::extract<int>(body.attr("clumpId"));
-  const bool moves = !dynamicOnly || bp::extract<bool>(body.attr("dynamic"))();
-  mass = moves ? bp::extract<Real>(s.attr("mass"))() : 0;
-  inertia = moves ? bp::extract<Vector3r>(s.attr("inertia"))() : Vector3r(Vector3r::Zero());
+  const AttributeNames& n = names();
+  const bp::object s = body.attr(n.state);
+  state.position = bp::extract<Vector3r>(s.attr(n.pos));
+  state.orientation = bp::extract<Quaternionr>(s.attr(n.ori));
+  state.velocity = bp::extract<Vector3r>(s.attr(n.vel));
+  state.angularVelocity = bp::extract<Vector3r>(s.attr(n.angVel));
+  clump = bp::extract<int>(body.attr(n.clumpId));
+  const bool moves = !dynamicOnly || bp::extract<bool>(body.attr(n.dynamic))();
+  mass = moves ? bp::extract<Real>(s.attr(n.mass))() : 0;
+  inertia = moves ? bp::extract<Vector3r>(s.attr(n.inertia))() : Vector3r(Vector3r::Zero());
   const char* bad = !state.position.allFinite()                ? "position"
                     : !state.orientation.coeffs().allFinite() ? "orientation"
                     : !state.velocity.allFinite()             ? "velocity"
@@ -48,8 +67,9 @@ void readState(const bp::object& body, int id, bool dynamicOnly, BodyState& stat
 // "roundedmesh"); one replaced by hand would go on with the HertzMaterial the engine knows, silently: refuse the
 // step instead.
 void requireOwnMaterial(const bp::object& body, int id, const char* kind) {
-  const bp::object material = body.attr("material");
-  if (!material.is_none() && bp::extract<std::string>(material.attr("label"))() == "roundedmesh") return;
+  const AttributeNames& n = names();
+  const bp::object material = body.attr(n.material);
+  if (!material.is_none() && bp::extract<std::string>(material.attr(n.label))() == "roundedmesh") return;
   const std::string found =
       material.is_none() ? "removed"
                          : "replaced by a " + bp::extract<std::string>(material.attr("__class__").attr("__name__"))() +
@@ -62,7 +82,7 @@ void requireOwnMaterial(const bp::object& body, int id, const char* kind) {
 // Where `body` is, seen from process `rank` (readScene).
 Residence residence(const bp::object& body, int rank) {
   if (rank < 0) return Residence::Own;
-  const int owner = bp::extract<int>(body.attr("subdomain"));
+  const int owner = bp::extract<int>(body.attr(names().subdomain));
   if (owner == rank) return Residence::Own;
   // The master computes only the pairs among its own bodies: the workers compute every other pair and send it
   // the forces on its bodies. A worker's body the master still holds has a stale state.
@@ -73,13 +93,14 @@ Residence residence(const bp::object& body, int rank) {
 }  // namespace
 
 PartnerShape yadeShape(const bp::object& body, int id) {
-  const bp::object shape = body.attr("shape");
-  const std::string kind = shape.is_none() ? "no shape" : bp::extract<std::string>(shape.attr("__class__").attr("__name__"))();
+  const AttributeNames& n = names();
+  const bp::object shape = body.attr(n.shape);
+  const std::string kind = shape.is_none() ? "no shape" : bp::extract<std::string>(shape.attr(n.type).attr(n.typeName))();
   if (kind == "Wall") return Wall{bp::extract<int>(shape.attr("axis")), bp::extract<int>(shape.attr("sense"))};
   if (kind == "Box") return Box{bp::extract<Vector3r>(shape.attr("extents"))};
   if (kind == "Sphere") return Sphere{bp::extract<Real>(shape.attr("radius"))};
   if (kind == "Facet") {
-    const bp::object v = shape.attr("vertices");
+    const bp::object v = shape.attr(n.vertices);
     return Facet{{bp::extract<Vector3r>(v[0])(), bp::extract<Vector3r>(v[1])(), bp::extract<Vector3r>(v[2])()}, nullptr};
   }
   throw std::invalid_argument("body " + std::to_string(id) + ": a " + kind +
