@@ -4,10 +4,12 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <random>
 
 #include "pkg/engine/ContactStep.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_Plane_PressureGeom.hpp"
 #include "pkg/math/CirclePolygonArea.hpp"
+#include "pkg/math/TriangleIntersections.hpp"
 #include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/Icosphere.hpp"
 
@@ -22,6 +24,42 @@ void BM_CirclePolygonArea(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(circlePolygonArea(1.0, triangle));
 }
 BENCHMARK(BM_CirclePolygonArea);
+
+// S = P ∩ Q and its point closest to the origin for triangle pairs of a contact's size and overlap (two triangles of
+// touching surfaces: Q is P turned by up to 30 degrees and moved by up to half its size), one at a time
+// (ConvexPolygon) or a batch at a time (TriangleIntersections, the widest vector unit); time per pair.
+void BM_TriangleIntersections(benchmark::State& state) {
+  constexpr int kPairs = TriangleIntersections::kCapacity;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<Real> unit(-1, 1);
+  std::vector<ConvexPolygon> p(kPairs), q(kPairs);
+  for (int k = 0; k < kPairs; ++k) {
+    const Vector2r a(unit(rng), unit(rng)), b(unit(rng), unit(rng)), c(unit(rng), unit(rng));
+    const Real turn = 0.5 * unit(rng);
+    const Matrix2r R = Eigen::Rotation2D<Real>(turn).toRotationMatrix();
+    const Vector2r shift(0.5 * unit(rng), 0.5 * unit(rng));
+    p[k] = ConvexPolygon::triangle(a, b, c);
+    q[k] = ConvexPolygon::triangle(R * a + shift, R * b + shift, R * c + shift);
+  }
+  const bool batched = state.range(0) == 1;
+  TriangleIntersections batch;
+  for (auto _ : state) {
+    if (batched) {
+      batch.size = kPairs;
+      for (int k = 0; k < kPairs; ++k) batch.set(k, p[k], q[k]);
+      intersectTriangles(batch);
+      benchmark::DoNotOptimize(batch.closestX[kPairs - 1]);
+    } else {
+      for (int k = 0; k < kPairs; ++k) {
+        const ConvexPolygon s = p[k].intersection(q[k]);
+        benchmark::DoNotOptimize(s.empty() ? Vector2r::Zero().eval() : s.closestPoint(Vector2r::Zero()));
+      }
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * kPairs);
+  state.SetLabel(batched ? "batched" : "one at a time");
+}
+BENCHMARK(BM_TriangleIntersections)->Arg(0)->Arg(1);
 
 // One triangle contact through Law2 in each regime (S1 particle on the S1 box, 5 % overlap).
 void BM_Law2(benchmark::State& state) {

@@ -1,6 +1,8 @@
 // Ig2 functor: the triangles of two rounded bodies against each other (Appendix B): every candidate pair
-// (TrianglePairCandidates.hpp) goes through triangleSphereGeom with body 2's triangle placed in body 1's frame;
-// a pair deeper than `shallow` [m] must also lie inside both bodies (DeepContactCriterion.hpp).
+// (TrianglePairCandidates.hpp) goes through triangleSphereGeom with body 2's triangle placed in body 1's frame (on
+// AVX-512, in batches whose polygons S are clipped together: TriangleIntersections.hpp, the same result bit for bit);
+// the segment between the two caps must lie inside both bodies (TriangleExits.hpp, DeepContactCriterion.hpp; the
+// distance fields first for a pair deeper than `shallow` [m]).
 // Inputs: body 2's pose in body 1's frame (x1 = rotation * x2 + translation), the candidates, and body 2's
 // motion relative to body 1. Appends one PressureGeom per triangle pair in contact, in candidate order.
 #pragma once

@@ -51,9 +51,10 @@ struct MovedTriangle {
   Vector3r centre_;
 };
 
+// The tests before S, and the contact plane: fills geom's plane, radius, sphereOverlap, contactRadius, nodes, and
+// polygon with P'; for a triangle partner also partnerNodes (Q's corners).
 template <class Partner>
-GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partner, const RelativeMotion& motion,
-                    PressureGeom& geom, CurvatureModel model) {
+GeomTest contactPlane(const RoundedMesh& mesh, int triangle, const Partner& partner, PressureGeom& geom) {
   const RoundedTriangle& rounded = mesh.rounded(triangle);
   const Vector3r d = partner.centre() - rounded.sphereCentre;
   const bool isTriangle = partner.triangle() >= 0;
@@ -70,29 +71,33 @@ GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partne
   const Vector3r c = rounded.sphereCentre + ((distance - R2) * (distance + R2) + R1 * R1) / (2 * distance) * n;
   if (missesContactCircle(rounded.circumcentre, rounded.circumradius, c, n, a)) return {Rejection::OutsideCircle};
 
-  geom.tangent1 = n.unitOrthogonal();
-  geom.tangent2 = n.cross(geom.tangent1);
-  projectTriangle(mesh, triangle, c, geom.tangent1, geom.tangent2, geom);
-  if (isTriangle) {
-    for (int i = 0; i < 3; ++i)
-      geom.partnerNodes[i] = planeCoordinates(partner.corner(i), c, geom.tangent1, geom.tangent2);
-    geom.polygon = geom.polygon.intersection(
-        ConvexPolygon::triangle(geom.partnerNodes[0], geom.partnerNodes[1], geom.partnerNodes[2]));
-  }
-  if (geom.polygon.empty()) return {Rejection::EmptyPolygon};
-
-  geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
-  const Real hSq = geom.effectivePoint.squaredNorm();
-  if (!(hSq < a * a)) return {Rejection::BeyondContactCircle};
-
-  geom.triangle = triangle;
-  geom.partnerTriangle = partner.triangle();
   geom.centre = c;
   geom.normal = n;
   geom.radius = R;
   geom.sphereOverlap = overlap;
   geom.contactRadius = a;
-  geom.effectiveOverlap = overlap - R1 - R2 + std::sqrt(std::max(R1 * R1 - hSq, Real(0))) +
+  geom.tangent1 = n.unitOrthogonal();
+  geom.tangent2 = n.cross(geom.tangent1);
+  projectTriangle(mesh, triangle, c, geom.tangent1, geom.tangent2, geom);
+  if (isTriangle)
+    for (int i = 0; i < 3; ++i)
+      geom.partnerNodes[i] = planeCoordinates(partner.corner(i), c, geom.tangent1, geom.tangent2);
+  return {Rejection::None};
+}
+
+// With S in geom.polygon and its point closest to c in geom.effectivePoint: the contact circle's test and the rest.
+template <class Partner>
+GeomTest contactOnPolygon(const RoundedMesh& mesh, int triangle, const Partner& partner, const RelativeMotion& motion,
+                          PressureGeom& geom, CurvatureModel model) {
+  if (geom.polygon.empty()) return {Rejection::EmptyPolygon};
+  const Real hSq = geom.effectivePoint.squaredNorm();
+  const Real a = geom.contactRadius;
+  if (!(hSq < a * a)) return {Rejection::BeyondContactCircle};
+
+  const Real R1 = mesh.rounded(triangle).radius, R2 = partner.radius();
+  geom.triangle = triangle;
+  geom.partnerTriangle = partner.triangle();
+  geom.effectiveOverlap = geom.sphereOverlap - R1 - R2 + std::sqrt(std::max(R1 * R1 - hSq, Real(0))) +
                           std::sqrt(std::max(R2 * R2 - hSq, Real(0)));
   geom.elliptical = false;
   if (model == CurvatureModel::Principal) {
@@ -101,6 +106,16 @@ GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partne
   }
   setRelativeVelocity(geom, motion);
   return {Rejection::None};
+}
+
+template <class Partner>
+GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partner, const RelativeMotion& motion,
+                    PressureGeom& geom, CurvatureModel model) {
+  const GeomTest plane = contactPlane(mesh, triangle, partner, geom);
+  if (!plane) return plane;
+  if (partner.triangle() >= 0) geom.polygon = geom.polygon.intersection(partnerPolygon(geom));
+  if (!geom.polygon.empty()) geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
+  return contactOnPolygon(mesh, triangle, partner, motion, geom, model);
 }
 
 }  // namespace
@@ -127,6 +142,15 @@ GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const Contact
 GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const PlacedTriangle& partner,
                             const RelativeMotion& motion, PressureGeom& geom, CurvatureModel model) {
   return sphereGeom(mesh, triangle, MovedTriangle(partner), motion, geom, model);
+}
+
+GeomTest trianglePlane(const RoundedMesh& mesh, int triangle, const PlacedTriangle& partner, PressureGeom& geom) {
+  return contactPlane(mesh, triangle, MovedTriangle(partner), geom);
+}
+
+GeomTest triangleContactOnPolygon(const RoundedMesh& mesh, int triangle, const PlacedTriangle& partner,
+                                  const RelativeMotion& motion, PressureGeom& geom, CurvatureModel model) {
+  return contactOnPolygon(mesh, triangle, MovedTriangle(partner), motion, geom, model);
 }
 
 }  // namespace roundedmesh

@@ -55,4 +55,18 @@ GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const PlacedT
                             const RelativeMotion& motion, PressureGeom& geom,
                             CurvatureModel model = CurvatureModel::Mean);
 
+// triangleSphereGeom of a triangle partner in two stages around S, for a caller that clips many candidates' S at once
+// (TriangleIntersections.hpp); together they give triangleSphereGeom's result and geom bit for bit.
+//   trianglePlane: the tests before S, and the contact plane; P' -> geom.polygon, Q's corners -> geom.partnerNodes.
+//   triangleContactOnPolygon: with S = P' ∩ Q' in geom.polygon and, if S is not empty, its point closest to c in
+//   geom.effectivePoint: the rest.
+GeomTest trianglePlane(const RoundedMesh& mesh, int triangle, const PlacedTriangle& partner, PressureGeom& geom);
+GeomTest triangleContactOnPolygon(const RoundedMesh& mesh, int triangle, const PlacedTriangle& partner,
+                                  const RelativeMotion& motion, PressureGeom& geom, CurvatureModel model);
+
+// Q' of a triangle partner, as S is clipped by it: the triangle of geom.partnerNodes.
+inline ConvexPolygon partnerPolygon(const PressureGeom& geom) {
+  return ConvexPolygon::triangle(geom.partnerNodes[0], geom.partnerNodes[1], geom.partnerNodes[2]);
+}
+
 }  // namespace roundedmesh

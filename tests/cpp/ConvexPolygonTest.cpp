@@ -60,15 +60,19 @@ TEST(ConvexPolygon, ContainsAndClosestPoint) {
 
 // clippedToSquare skips the square's edges that every corner is inside of; the result must be intersection's, corner
 // for corner and bit for bit: random triangles and their intersections with another, from wholly inside the square to
-// wholly outside, and corners exactly on its edges.
+// wholly outside, and corners exactly on the line of each of the square's four edges.
 TEST(ConvexPolygon, ClippingToASquareIsTheIntersectionWithIt) {
   test::RandomSource random(1409);
   int clipped = 0, inside = 0, empty = 0;
   for (int trial = 0; trial < 100000; ++trial) {
     const Real h = random.uniform(0.1, 1), spread = random.uniform(0.2, 3) * h;
     auto point = [&] {
-      // A corner on an edge of the square now and then.
-      if (random.uniform(0, 1) < 0.05) return Vector2r(h, random.uniform(-spread, spread));
+      // A corner on the line of one of the square's four edges now and then.
+      const Real along = random.uniform(-spread, spread), pick = random.uniform(0, 1);
+      if (pick < 0.02) return Vector2r(h, along);
+      if (pick < 0.04) return Vector2r(-h, along);
+      if (pick < 0.06) return Vector2r(along, h);
+      if (pick < 0.08) return Vector2r(along, -h);
       return Vector2r(random.uniform(-spread, spread), random.uniform(-spread, spread));
     };
     ConvexPolygon p = ConvexPolygon::triangle(point(), point(), point());

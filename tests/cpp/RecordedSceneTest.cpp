@@ -6,14 +6,17 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cstring>
 #include <set>
 
 #include "bench/RecordedScene.hpp"
+#include "hwy/targets.h"
 #include "pkg/bound/BatchedCandidates.hpp"
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/PairLoad.hpp"
 #include "pkg/engine/ContactStep.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_RoundedMesh_PressureGeom.hpp"
+#include "pkg/math/TriangleIntersections.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -139,6 +142,76 @@ TEST(RecordedScene, BatchedListsAreTheReferenceLists) {
   // The batches decide nearly every pair themselves (2 of 5.3 million left to the reference's test here): a pair the
   // reference decides costs about 12 times as much.
   EXPECT_LT(undecided, 1e-4 * scanned);
+}
+
+// The narrow phase clips the polygons S of a pair's candidates in lanes where the vector unit is wide enough for that
+// to pay (TriangleIntersections.hpp: AVX-512), one candidate at a time elsewhere; both give the same triangle contacts
+// bit for bit. Every body pair's candidates in the settled packing and at two steps of the landing window (deep pairs)
+// go through Ig2 with each instruction set the processor has; every contact's geometry must be the first set's.
+bool sameGeometry(const PressureGeom& a, const PressureGeom& b) {
+  auto same = [](const auto& x, const auto& y) { return std::memcmp(&x, &y, sizeof(x)) == 0; };
+  bool equal = a.triangle == b.triangle && a.partnerTriangle == b.partnerTriangle && same(a.centre, b.centre) &&
+               same(a.normal, b.normal) && same(a.tangent1, b.tangent1) && same(a.tangent2, b.tangent2) &&
+               same(a.radius, b.radius) && same(a.sphereOverlap, b.sphereOverlap) && same(a.overlapRate, b.overlapRate) &&
+               same(a.overlapRateSlope, b.overlapRateSlope) && same(a.contactRadius, b.contactRadius) &&
+               same(a.nodes, b.nodes) && same(a.partnerNodes, b.partnerNodes) && same(a.effectivePoint, b.effectivePoint) &&
+               same(a.effectiveOverlap, b.effectiveOverlap) && same(a.slip, b.slip) && a.polygon.size() == b.polygon.size();
+  for (int i = 0; equal && i < a.polygon.size(); ++i) equal = same(a.polygon[i], b.polygon[i]);
+  return equal;
+}
+
+TEST(RecordedScene, NarrowPhaseInLanesIsOneAtATimeBitForBit) {
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  int inLanes = 0;
+  for (const int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    inLanes += triangleIntersectionsPay();
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  if (inLanes == 0 || inLanes == static_cast<int>(targets.size()))
+    GTEST_SKIP() << "this processor runs the narrow phase one way only (" << inLanes << " of " << targets.size()
+                 << " instruction sets in lanes); TriangleIntersectionsTest checks the lanes on each";
+  const ContactModel& model = scene().model;
+  const int bodyCount = static_cast<int>(model.bodies.size());
+  long contacts = 0;
+  for (int frame = 0; frame < 3; ++frame) {
+    ContactData data;
+    if (frame == 0) {
+      scene().setStates(data);
+    } else {
+      scene().setStates(data, scene().landing, frame);
+    }
+    contactForces(model, data);
+    for (const BodyPair& pair : data.pairs) {
+      if (pair.other >= bodyCount) continue;
+      const CandidateList& list = data.candidateLists[pair.neighbour];
+      const RoundedBody &a = model.bodies[pair.body], &b = model.bodies[pair.other];
+      const BodyState &s1 = data.bodyStates[pair.body], &s2 = data.bodyStates[pair.other];
+      const Matrix3r toBody = s1.orientation.toRotationMatrix().transpose();
+      const Matrix3r rotation = (s1.orientation.conjugate() * s2.orientation).toRotationMatrix();
+      const Vector3r translation = toBody * (s2.position - s1.position);
+      const RelativeMotion motion = relativeMotion(s1, s2, toBody);
+      const Real shallow = kDeepestOverlap * std::min(a.equivalentRadius, b.equivalentRadius);
+      std::vector<PressureGeom> first;
+      for (size_t k = 0; k < targets.size(); ++k) {
+        hwy::SetSupportedTargetsForTest(targets[k]);
+        std::vector<PressureGeom> geoms;
+        Ig2_RoundedMesh_RoundedMesh_PressureGeom(*a.mesh, *b.mesh, rotation, translation, list.pairs, shallow, motion,
+                                                 geoms);
+        if (k == 0) {
+          first = geoms;
+          continue;
+        }
+        ASSERT_EQ(geoms.size(), first.size()) << hwy::TargetName(targets[k]) << ", bodies " << pair.body << "-" << pair.other;
+        for (size_t g = 0; g < geoms.size(); ++g)
+          ASSERT_TRUE(sameGeometry(geoms[g], first[g])) << hwy::TargetName(targets[k]) << ", bodies " << pair.body << "-"
+                                                        << pair.other << ", contact " << g;
+      }
+      contacts += static_cast<long>(first.size());
+    }
+    hwy::SetSupportedTargetsForTest(0);
+  }
+  EXPECT_GT(contacts, 50000);
 }
 
 // timing = 'stages' measures the stages inside the pairs and changes nothing else. On one thread the stages lie
