@@ -4,7 +4,7 @@
 // an AVX-512 machine: AVX3, AVX2, SSE4, SSSE3 and Highway's scalar fallback). No tolerance: the lanes run the
 // reference's operations in its order. The pairs are those a narrow phase meets (Q is P turned a little and moved by
 // up to its size) and harder ones: unrelated triangles from far apart to one inside the other, pairs sharing a corner
-// or an edge exactly, corners on the other's edge lines, slivers, and sizes from 1e-6 to 1; batches of 1 to 64 lanes,
+// or an edge exactly, corners on the other's edge lines, slivers, and sizes from 1e-6 to 1; batches of 1 to 16 lanes,
 // so that the padding past a batch's end is exercised.
 #include <gtest/gtest.h>
 
