@@ -10,7 +10,8 @@ namespace roundedmesh {
 void Ig2_RoundedMesh_RoundedMesh_PressureGeom(const RoundedMesh& mesh1, const RoundedMesh& mesh2,
                                               const Matrix3r& rotation, const Vector3r& translation,
                                               const std::vector<TrianglePair>& candidates, Real shallow,
-                                              const RelativeMotion& motion, GeomOutput out, CurvatureModel model) {
+                                              const RelativeMotion& motion, GeomOutput out, CurvatureModel model,
+                                              PolygonLanes lanes) {
   const PlacedMesh body2{mesh2, rotation, translation};
   const TriangleExits &exits1 = mesh1.exits(), &exits2 = mesh2.exits();
   const Matrix3r back = rotation.transpose();
@@ -26,7 +27,7 @@ void Ig2_RoundedMesh_RoundedMesh_PressureGeom(const RoundedMesh& mesh1, const Ro
     out.add(result, geom);
   };
 
-  if (!triangleIntersectionsPay()) {
+  if (lanes == PolygonLanes::Never || (lanes == PolygonLanes::WherePaying && !triangleIntersectionsPay())) {
     PressureGeom geom;
     for (const auto& [s, t] : candidates) add(s, t, triangleSphereGeom(mesh1, s, placed(t), motion, geom, model), geom);
     return;
@@ -56,11 +57,10 @@ void Ig2_RoundedMesh_RoundedMesh_PressureGeom(const RoundedMesh& mesh1, const Ro
       if (result) {
         const int lane = laneOf[k];
         if (batch.overflowed(lane)) {
-          geom.polygon = geom.polygon.intersection(partnerPolygon(geom));
-          if (!geom.polygon.empty()) geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
+          clipByPartner(geom);
         } else {
           geom.polygon = batch.polygon(lane);
-          geom.effectivePoint = batch.closestPoint(lane);
+          if (!geom.polygon.empty()) geom.effectivePoint = batch.closestPoint(lane);
         }
         result = triangleContactOnPolygon(mesh1, s, placed(t), motion, geom, model);
       }

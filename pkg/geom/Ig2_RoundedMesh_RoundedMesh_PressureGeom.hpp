@@ -15,9 +15,15 @@
 
 namespace roundedmesh {
 
+// Whether the polygons S are clipped in lanes: where that pays (triangleIntersectionsPay()), or always, or never, for
+// tests and benchmarks that compare the two ways on any processor. Both give the same contacts bit for bit.
+enum class PolygonLanes { WherePaying, Always, Never };
+
 void Ig2_RoundedMesh_RoundedMesh_PressureGeom(const RoundedMesh& mesh1, const RoundedMesh& mesh2,
                                               const Matrix3r& rotation, const Vector3r& translation,
                                               const std::vector<TrianglePair>& candidates, Real shallow,
-                                              const RelativeMotion& motion, GeomOutput out, CurvatureModel model = CurvatureModel::Mean);
+                                              const RelativeMotion& motion, GeomOutput out,
+                                              CurvatureModel model = CurvatureModel::Mean,
+                                              PolygonLanes lanes = PolygonLanes::WherePaying);
 
 }  // namespace roundedmesh

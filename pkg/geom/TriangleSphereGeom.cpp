@@ -99,7 +99,10 @@ GeomTest contactOnPolygon(const RoundedMesh& mesh, int triangle, const Partner& 
   geom.partnerTriangle = partner.triangle();
   geom.effectiveOverlap = geom.sphereOverlap - R1 - R2 + std::sqrt(std::max(R1 * R1 - hSq, Real(0))) +
                           std::sqrt(std::max(R2 * R2 - hSq, Real(0)));
+  // A circular contact's ellipse fields are the identity's, not what an earlier candidate left in geom.
   geom.elliptical = false;
+  geom.ellipseCentre = Vector2r::Zero();
+  geom.toCircle = Matrix2r::Identity();
   if (model == CurvatureModel::Principal) {
     const GeomTest ellipse = ellipticalContact(geom, triangleCap(mesh, triangle, geom), partner.cap(geom));
     if (!ellipse) return ellipse;
@@ -113,8 +116,10 @@ GeomTest sphereGeom(const RoundedMesh& mesh, int triangle, const Partner& partne
                     PressureGeom& geom, CurvatureModel model) {
   const GeomTest plane = contactPlane(mesh, triangle, partner, geom);
   if (!plane) return plane;
-  if (partner.triangle() >= 0) geom.polygon = geom.polygon.intersection(partnerPolygon(geom));
-  if (!geom.polygon.empty()) geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
+  if (partner.triangle() >= 0)
+    clipByPartner(geom);
+  else if (!geom.polygon.empty())
+    geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
   return contactOnPolygon(mesh, triangle, partner, motion, geom, model);
 }
 
@@ -142,6 +147,11 @@ GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const Contact
 GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const PlacedTriangle& partner,
                             const RelativeMotion& motion, PressureGeom& geom, CurvatureModel model) {
   return sphereGeom(mesh, triangle, MovedTriangle(partner), motion, geom, model);
+}
+
+void clipByPartner(PressureGeom& geom) {
+  geom.polygon = geom.polygon.intersection(partnerPolygon(geom));
+  if (!geom.polygon.empty()) geom.effectivePoint = geom.polygon.closestPoint(Vector2r::Zero());
 }
 
 GeomTest trianglePlane(const RoundedMesh& mesh, int triangle, const PlacedTriangle& partner, PressureGeom& geom) {

@@ -69,4 +69,8 @@ inline ConvexPolygon partnerPolygon(const PressureGeom& geom) {
   return ConvexPolygon::triangle(geom.partnerNodes[0], geom.partnerNodes[1], geom.partnerNodes[2]);
 }
 
+// Between the two stages, one candidate at a time: S = P' ∩ Q' -> geom.polygon and, if S is not empty, its point
+// closest to c -> geom.effectivePoint.
+void clipByPartner(PressureGeom& geom);
+
 }  // namespace roundedmesh

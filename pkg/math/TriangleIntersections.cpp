@@ -152,11 +152,9 @@ ConvexPolygon TriangleIntersections::polygon(int k) const {
 }
 
 void intersectTriangles(TriangleIntersections& batch) {
-  // The vector loop runs over whole vectors: the lanes past `size` up to the next multiple of the widest vector
-  // hold copies of lane 0, so that every lane computes on numbers the batch was given.
-  constexpr int kWidest = 8;
-  const int padded = std::min((batch.size + kWidest - 1) / kWidest * kWidest, TriangleIntersections::kCapacity);
-  for (int k = batch.size; k < padded; ++k)
+  // The vector loop runs over whole vectors, of at most kCapacity lanes: the lanes past `size` hold copies of lane 0,
+  // so that every lane computes on numbers the batch was given.
+  for (int k = batch.size; k < TriangleIntersections::kCapacity; ++k)
     for (int i = 0; i < 3; ++i) {
       batch.px[i][k] = batch.px[i][0];
       batch.py[i][k] = batch.py[i][0];

@@ -5,9 +5,9 @@
 //
 // The lanes run several per instruction on the widest vector unit the processor has (Google Highway, chosen at run
 // time), with the reference's operations in the reference's order and no fused multiply-add: every lane's corners,
-// their order and the closest point are ConvexPolygon's bit for bit (TriangleIntersectionsTest). A lane that would
-// need more than kCorners corners (possible only where rounding makes a nearly degenerate polygon look non-convex)
-// is marked and left to ConvexPolygon.
+// their order and the closest point are ConvexPolygon's bit for bit (TriangleIntersectionsTest). A lane whose clip by
+// Q's edge e would give more than the 4 + e corners a convex polygon can have there (possible only where rounding makes
+// a nearly degenerate polygon look non-convex) is marked and left to ConvexPolygon.
 #pragma once
 
 #include "pkg/math/ConvexPolygon.hpp"
@@ -15,7 +15,7 @@
 namespace roundedmesh {
 
 struct TriangleIntersections {
-  static constexpr int kCapacity = 16;  // lanes per batch: a multiple of every vector unit's width
+  static constexpr int kCapacity = 16;  // lanes per batch: a multiple of every x86 vector unit's width
   static constexpr int kCorners = 6;    // the most corners two triangles' intersection has
   static constexpr Real kOverflow = -1; // `corners` of a lane left to ConvexPolygon
 

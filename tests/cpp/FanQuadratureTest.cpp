@@ -15,6 +15,7 @@
 #include "hwy/targets.h"
 #include "pkg/law/FanQuadrature.hpp"
 #include "pkg/math/DunavantRule.hpp"
+#include "tests/support/HighwayTargets.hpp"
 #include "tests/support/RandomPairs.hpp"
 
 namespace roundedmesh {
@@ -51,7 +52,7 @@ TEST(FanQuadrature, RandomPolygonsGiveTheReferencePointsBitForBit) {
   const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
   ASSERT_FALSE(targets.empty());
   for (const int64_t target : targets) {
-    hwy::SetSupportedTargetsForTest(target);
+    const test::TargetForTest chosen(target);
     SCOPED_TRACE(hwy::TargetName(target));
     test::RandomSource random(4139);
     long lanes = 0, outside = 0, inside = 0;
@@ -84,7 +85,6 @@ TEST(FanQuadrature, RandomPolygonsGiveTheReferencePointsBitForBit) {
     EXPECT_GT(outside, lanes / 10);
     EXPECT_GT(inside, lanes / 10);
   }
-  hwy::SetSupportedTargetsForTest(0);  // the processor's own again
 }
 
 // Over a square that holds the circle, the shape's integral is 2 pi a^3 / 3 (the Hertz pressure's volume over its

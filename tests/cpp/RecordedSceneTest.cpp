@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstring>
 #include <set>
+#include <string>
 
 #include "bench/RecordedScene.hpp"
 #include "hwy/targets.h"
@@ -16,7 +17,7 @@
 #include "pkg/engine/PairLoad.hpp"
 #include "pkg/engine/ContactStep.hpp"
 #include "pkg/geom/Ig2_RoundedMesh_RoundedMesh_PressureGeom.hpp"
-#include "pkg/math/TriangleIntersections.hpp"
+#include "tests/support/HighwayTargets.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -145,9 +146,11 @@ TEST(RecordedScene, BatchedListsAreTheReferenceLists) {
 }
 
 // The narrow phase clips the polygons S of a pair's candidates in lanes where the vector unit is wide enough for that
-// to pay (TriangleIntersections.hpp: AVX-512), one candidate at a time elsewhere; both give the same triangle contacts
-// bit for bit. Every body pair's candidates in the settled packing and at two steps of the landing window (deep pairs)
-// go through Ig2 with each instruction set the processor has; every contact's geometry must be the first set's.
+// to pay (TriangleIntersections.hpp: AVX-512), one candidate at a time elsewhere; both ways give the same triangle
+// contacts bit for bit. Every body pair's candidates in the settled packing and at two steps of the landing window
+// (deep pairs) go through Ig2 both ways, on each instruction set the processor has, with the paper's circles and with
+// the principal curvatures' ellipses: every contact's geometry and the funnel's counts must be those of one candidate
+// at a time on the processor's own instruction set.
 bool sameGeometry(const PressureGeom& a, const PressureGeom& b) {
   auto same = [](const auto& x, const auto& y) { return std::memcmp(&x, &y, sizeof(x)) == 0; };
   bool equal = a.triangle == b.triangle && a.partnerTriangle == b.partnerTriangle && same(a.centre, b.centre) &&
@@ -155,25 +158,24 @@ bool sameGeometry(const PressureGeom& a, const PressureGeom& b) {
                same(a.radius, b.radius) && same(a.sphereOverlap, b.sphereOverlap) && same(a.overlapRate, b.overlapRate) &&
                same(a.overlapRateSlope, b.overlapRateSlope) && same(a.contactRadius, b.contactRadius) &&
                same(a.nodes, b.nodes) && same(a.partnerNodes, b.partnerNodes) && same(a.effectivePoint, b.effectivePoint) &&
-               same(a.effectiveOverlap, b.effectiveOverlap) && same(a.slip, b.slip) && a.polygon.size() == b.polygon.size();
+               same(a.effectiveOverlap, b.effectiveOverlap) && same(a.slip, b.slip) && a.elliptical == b.elliptical &&
+               same(a.ellipseCentre, b.ellipseCentre) && same(a.toCircle, b.toCircle) &&
+               a.polygon.size() == b.polygon.size();
   for (int i = 0; equal && i < a.polygon.size(); ++i) equal = same(a.polygon[i], b.polygon[i]);
   return equal;
 }
 
+bool sameCounts(const NarrowPhaseCounts& a, const NarrowPhaseCounts& b) {
+  return a.candidates == b.candidates && a.notFacing == b.notFacing && a.noOverlap == b.noOverlap &&
+         a.outsideCircle == b.outsideCircle && a.emptyPolygon == b.emptyPolygon &&
+         a.beyondContactCircle == b.beyondContactCircle && a.throughBody == b.throughBody;
+}
+
 TEST(RecordedScene, NarrowPhaseInLanesIsOneAtATimeBitForBit) {
   const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
-  int inLanes = 0;
-  for (const int64_t target : targets) {
-    hwy::SetSupportedTargetsForTest(target);
-    inLanes += triangleIntersectionsPay();
-  }
-  hwy::SetSupportedTargetsForTest(0);
-  if (inLanes == 0 || inLanes == static_cast<int>(targets.size()))
-    GTEST_SKIP() << "this processor runs the narrow phase one way only (" << inLanes << " of " << targets.size()
-                 << " instruction sets in lanes); TriangleIntersectionsTest checks the lanes on each";
   const ContactModel& model = scene().model;
   const int bodyCount = static_cast<int>(model.bodies.size());
-  long contacts = 0;
+  long contacts = 0, elliptical = 0;
   for (int frame = 0; frame < 3; ++frame) {
     ContactData data;
     if (frame == 0) {
@@ -192,26 +194,36 @@ TEST(RecordedScene, NarrowPhaseInLanesIsOneAtATimeBitForBit) {
       const Vector3r translation = toBody * (s2.position - s1.position);
       const RelativeMotion motion = relativeMotion(s1, s2, toBody);
       const Real shallow = kDeepestOverlap * std::min(a.equivalentRadius, b.equivalentRadius);
-      std::vector<PressureGeom> first;
-      for (size_t k = 0; k < targets.size(); ++k) {
-        hwy::SetSupportedTargetsForTest(targets[k]);
-        std::vector<PressureGeom> geoms;
-        Ig2_RoundedMesh_RoundedMesh_PressureGeom(*a.mesh, *b.mesh, rotation, translation, list.pairs, shallow, motion,
-                                                 geoms);
-        if (k == 0) {
-          first = geoms;
-          continue;
+      for (const CurvatureModel curvature : {CurvatureModel::Mean, CurvatureModel::Principal}) {
+        auto narrowPhase = [&](PolygonLanes lanes, std::vector<PressureGeom>& geoms, NarrowPhaseCounts& counts) {
+          Ig2_RoundedMesh_RoundedMesh_PressureGeom(*a.mesh, *b.mesh, rotation, translation, list.pairs, shallow, motion,
+                                                   GeomOutput(geoms, &counts), curvature, lanes);
+        };
+        std::vector<PressureGeom> reference;
+        NarrowPhaseCounts referenceCounts;
+        narrowPhase(PolygonLanes::Never, reference, referenceCounts);
+        for (const int64_t target : targets) {
+          const test::TargetForTest chosen(target);
+          for (const PolygonLanes lanes : {PolygonLanes::Always, PolygonLanes::Never}) {
+            std::vector<PressureGeom> geoms;
+            NarrowPhaseCounts counts;
+            narrowPhase(lanes, geoms, counts);
+            const std::string where = std::string(hwy::TargetName(target)) +
+                                      (lanes == PolygonLanes::Always ? " in lanes" : " one at a time") + ", bodies " +
+                                      std::to_string(pair.body) + "-" + std::to_string(pair.other);
+            ASSERT_TRUE(sameCounts(counts, referenceCounts)) << where;
+            ASSERT_EQ(geoms.size(), reference.size()) << where;
+            for (size_t g = 0; g < geoms.size(); ++g)
+              ASSERT_TRUE(sameGeometry(geoms[g], reference[g])) << where << ", contact " << g;
+          }
         }
-        ASSERT_EQ(geoms.size(), first.size()) << hwy::TargetName(targets[k]) << ", bodies " << pair.body << "-" << pair.other;
-        for (size_t g = 0; g < geoms.size(); ++g)
-          ASSERT_TRUE(sameGeometry(geoms[g], first[g])) << hwy::TargetName(targets[k]) << ", bodies " << pair.body << "-"
-                                                        << pair.other << ", contact " << g;
+        contacts += static_cast<long>(reference.size());
+        for (const PressureGeom& geom : reference) elliptical += geom.elliptical;
       }
-      contacts += static_cast<long>(first.size());
     }
-    hwy::SetSupportedTargetsForTest(0);
   }
-  EXPECT_GT(contacts, 50000);
+  EXPECT_GT(contacts, 100000);
+  EXPECT_GT(elliptical, 10000);  // the principal curvatures' pass meets ellipses
 }
 
 // timing = 'stages' measures the stages inside the pairs and changes nothing else. On one thread the stages lie

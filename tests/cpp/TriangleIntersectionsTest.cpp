@@ -4,8 +4,7 @@
 // an AVX-512 machine: AVX3, AVX2, SSE4, SSSE3 and Highway's scalar fallback). No tolerance: the lanes run the
 // reference's operations in its order. The pairs are those a narrow phase meets (Q is P turned a little and moved by
 // up to its size) and harder ones: unrelated triangles from far apart to one inside the other, pairs sharing a corner
-// or an edge exactly, corners on the other's edge lines, slivers, and sizes from 1e-6 to 1; batches of 1 to 16 lanes,
-// so that the padding past a batch's end is exercised.
+// or an edge exactly, corners on the other's edge lines, slivers, and sizes from 1e-6 to 1; batches of 1 to 16 lanes.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +12,7 @@
 
 #include "hwy/targets.h"
 #include "pkg/math/TriangleIntersections.hpp"
+#include "tests/support/HighwayTargets.hpp"
 #include "tests/support/RandomPairs.hpp"
 
 namespace roundedmesh {
@@ -51,7 +51,7 @@ TEST(TriangleIntersections, EveryLaneIsConvexPolygonsBitForBit) {
   const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
   ASSERT_FALSE(targets.empty());
   for (const int64_t target : targets) {
-    hwy::SetSupportedTargetsForTest(target);
+    const test::TargetForTest chosen(target);
     SCOPED_TRACE(hwy::TargetName(target));
     test::RandomSource random(5821);
     long lanes = 0, empty = 0, clipped = 0, overflowed = 0;
@@ -82,7 +82,6 @@ TEST(TriangleIntersections, EveryLaneIsConvexPolygonsBitForBit) {
         clipped += reference.size() > 3;
       }
     }
-    hwy::SetSupportedTargetsForTest(0);
     // Both outcomes common; a lane left to ConvexPolygon (rounding making a sliver look non-convex) is rare.
     EXPECT_GT(empty, 10000);
     EXPECT_GT(clipped, 50000);
