@@ -3,6 +3,7 @@
 #define HWY_TARGET_INCLUDE "pkg/bound/BatchedCandidates.cpp"
 #include "hwy/foreach_target.h"  // IWYU pragma: keep
 #include "hwy/highway.h"
+#include "pkg/math/Vector3Lanes.hpp"
 
 #include "pkg/bound/BatchedCandidates.hpp"
 
@@ -78,13 +79,6 @@ struct Verdict {
   }
 };
 
-void Gather3(const std::vector<Real> (&column)[3], VI index, V out[3]) {
-  for (int k = 0; k < 3; ++k) out[k] = hn::GatherIndex(D(), column[k].data(), index);
-}
-void Rotate(const V (&m)[3][3], const V x[3], V out[3]) {
-  for (int i = 0; i < 3; ++i) out[i] = m[i][0] * x[0] + m[i][1] * x[1] + m[i][2] * x[2];
-}
-V Dot(const V a[3], const V b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // The square of the distance from the origin to a plane triangle (0 inside), and whether it is too thin for its
 // inside test to be sure of its sign (distanceFromOrigin in TrianglePairCandidates.cpp, the reference).
@@ -139,16 +133,16 @@ HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k,
   Verdict filters1to4{hn::FirstN(d, 0), hn::FirstN(d, hn::Lanes(d))};
   // Filter 1: triangle t's cap box moved into body 1's frame, grown by the reach, against s's.
   V min2[3], max2[3], min1[3], max1[3], centre2[3], size2[3], centre[3], extent[3];
-  Gather3(q.mesh2->boxMin, t, min2);
-  Gather3(q.mesh2->boxMax, t, max2);
-  Gather3(q.mesh1->boxMin, s, min1);
-  Gather3(q.mesh1->boxMax, s, max1);
+  Gather3(D(), q.mesh2->boxMin, t, min2);
+  Gather3(D(), q.mesh2->boxMax, t, max2);
+  Gather3(D(), q.mesh1->boxMin, s, min1);
+  Gather3(D(), q.mesh1->boxMax, s, max1);
   for (int i = 0; i < 3; ++i) {
     centre2[i] = half * (min2[i] + max2[i]);
     size2[i] = half * (max2[i] - min2[i]);
   }
-  Rotate(k.R, centre2, centre);
-  Rotate(k.absR, size2, extent);
+  Rotate3(k.R, centre2, centre);
+  Rotate3(k.absR, size2, extent);
   for (int i = 0; i < 3; ++i) {
     centre[i] = centre[i] + k.T[i];
     extent[i] = extent[i] + k.reach;
@@ -157,9 +151,9 @@ HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k,
   }
   // Filter 2: the circumscribed balls.
   V pc[3], qc0[3], qc[3], offset[3];
-  Gather3(q.mesh1->circumcentre, s, pc);
-  Gather3(q.mesh2->circumcentre, t, qc0);
-  Rotate(k.R, qc0, qc);
+  Gather3(D(), q.mesh1->circumcentre, s, pc);
+  Gather3(D(), q.mesh2->circumcentre, t, qc0);
+  Rotate3(k.R, qc0, qc);
   for (int i = 0; i < 3; ++i) {
     qc[i] = qc[i] + k.T[i];
     offset[i] = qc[i] - pc[i];
@@ -167,30 +161,30 @@ HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k,
   const V pRho = hn::GatherIndex(d, q.mesh1->circumradius.data(), s);
   const V qRho = hn::GatherIndex(d, q.mesh2->circumradius.data(), t);
   const V balls = pRho + qRho + k.reach;
-  filters1to4.fails = hn::Or(filters1to4.fails, hn::Gt(Dot(offset, offset), (balls + margin) * (balls + margin)));
-  filters1to4.passes = hn::And(filters1to4.passes, hn::Lt(Dot(offset, offset), (balls - margin) * (balls - margin)));
+  filters1to4.fails = hn::Or(filters1to4.fails, hn::Gt(Dot3(offset, offset), (balls + margin) * (balls + margin)));
+  filters1to4.passes = hn::And(filters1to4.passes, hn::Lt(Dot3(offset, offset), (balls - margin) * (balls - margin)));
   // Filters 3 and 4: the encompassing spheres' overlap and facing, within the motion.
   V ps[3], qs0[3], sphereOffset[3], pn[3], qn0[3], qn[3], psFromOrigin2[3];
-  Gather3(q.mesh1->sphereCentre, s, ps);
-  Gather3(q.mesh2->sphereCentre, t, qs0);
-  Rotate(k.R, qs0, sphereOffset);
+  Gather3(D(), q.mesh1->sphereCentre, s, ps);
+  Gather3(D(), q.mesh2->sphereCentre, t, qs0);
+  Rotate3(k.R, qs0, sphereOffset);
   for (int i = 0; i < 3; ++i) {
     sphereOffset[i] = sphereOffset[i] + k.T[i] - ps[i];
     psFromOrigin2[i] = ps[i] - k.T[i];
   }
-  const V distance = hn::Sqrt(Dot(sphereOffset, sphereOffset));
+  const V distance = hn::Sqrt(Dot3(sphereOffset, sphereOffset));
   const V pR = hn::GatherIndex(d, q.mesh1->radius.data(), s);
   const V qR = hn::GatherIndex(d, q.mesh2->radius.data(), t);
   const V qsFromOrigin = hn::GatherIndex(d, q.mesh2->sphereCentreDistance.data(), t);
   const V moved = k.skin * hn::Max(one, qsFromOrigin * k.inverseBound2);
-  const V apart = k.skin * hn::Max(one, hn::Min(qsFromOrigin, hn::Sqrt(Dot(psFromOrigin2, psFromOrigin2))) * k.inverseBound2);
+  const V apart = k.skin * hn::Max(one, hn::Min(qsFromOrigin, hn::Sqrt(Dot3(psFromOrigin2, psFromOrigin2))) * k.inverseBound2);
   const V overlap = pR + qR - distance;
   filters1to4.check(zero, overlap + apart, margin);
-  Gather3(q.mesh1->normal, s, pn);
-  Gather3(q.mesh2->normal, t, qn0);
-  Rotate(k.R, qn0, qn);
-  filters1to4.check(zero, Dot(pn, sphereOffset) + moved, margin);
-  filters1to4.check(Dot(qn, sphereOffset), moved + k.turn * (distance + moved), margin);
+  Gather3(D(), q.mesh1->normal, s, pn);
+  Gather3(D(), q.mesh2->normal, t, qn0);
+  Rotate3(k.R, qn0, qn);
+  filters1to4.check(zero, Dot3(pn, sphereOffset) + moved, margin);
+  filters1to4.check(Dot3(qn, sphereOffset), moved + k.turn * (distance + moved), margin);
   // Filter 5 (the contact circle, whose centre c and radius a_max can move with the motion) holds for pairs whose
   // centres stay apart within it; it is decided here only where they stay clearly apart (resolution): the circle's
   // slack grows without bound as they meet.
@@ -213,7 +207,7 @@ HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k,
   for (const auto& [circleCentre, radius] : {std::pair<const V*, V>(pc, pRho), std::pair<const V*, V>(qc, qRho)}) {
     V fromC[3];
     for (int i = 0; i < 3; ++i) fromC[i] = circleCentre[i] - c[i];
-    const V squared = Dot(fromC, fromC), along = Dot(fromC, n);
+    const V squared = Dot3(fromC, fromC), along = Dot3(fromC, n);
     const V lateralSq = squared - along * along;
     const V rest = radius + shift + (hn::Sqrt(squared) + radius) * tilt + k.skin;
     const V above = aMaxAbove + rest + tolerance(rest);
@@ -231,24 +225,24 @@ HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k,
   u[0] = hn::IfThenZeroElse(zLargest, hn::Neg(n[1]));
   u[1] = hn::IfThenElse(zLargest, hn::Neg(n[2]), n[0]);
   u[2] = hn::IfThenElseZero(zLargest, n[1]);
-  const V uLength = hn::Sqrt(Dot(u, u));
+  const V uLength = hn::Sqrt(Dot3(u, u));
   for (V& ui : u) ui = ui / uLength;
   const V v[3] = {n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]};
   V px[3], py[3], qx[3], qy[3], farSq = zero;
   for (int corner = 0; corner < 3; ++corner) {
     V xp[3], xq0[3], xq[3];
-    Gather3(q.mesh1->corner[corner], s, xp);
-    Gather3(q.mesh2->corner[corner], t, xq0);
-    Rotate(k.R, xq0, xq);
+    Gather3(D(), q.mesh1->corner[corner], s, xp);
+    Gather3(D(), q.mesh2->corner[corner], t, xq0);
+    Rotate3(k.R, xq0, xq);
     for (int i = 0; i < 3; ++i) {
       xp[i] = xp[i] - c[i];
       xq[i] = xq[i] + k.T[i] - c[i];
     }
-    farSq = hn::Max(farSq, hn::Max(Dot(xp, xp), Dot(xq, xq)));
-    px[corner] = Dot(xp, u);
-    py[corner] = Dot(xp, v);
-    qx[corner] = Dot(xq, u);
-    qy[corner] = Dot(xq, v);
+    farSq = hn::Max(farSq, hn::Max(Dot3(xp, xp), Dot3(xq, xq)));
+    px[corner] = Dot3(xp, u);
+    py[corner] = Dot3(xp, v);
+    qx[corner] = Dot3(xq, u);
+    qy[corner] = Dot3(xq, v);
   }
   const V far = hn::Sqrt(farSq);
   const V slack = shift + far * tilt + k.skin;

@@ -80,6 +80,8 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   // whose normal forces are all zero; the pair's normal stiffness.
   Vector3r moment_B = Vector3r::Zero(), normals_B = Vector3r::Zero(), points_B = Vector3r::Zero();
   Real normalForce = 0, stiffness = 0;
+  // The friction laws' inputs, only where the pair has friction.
+  const bool frictional = law.frictional(), springs = frictional && !law.viscous();
   thread_local std::vector<ContactShare> shares;
   shares.clear();
   const size_t listedFrom = contacts ? contacts->size() : 0;
@@ -104,8 +106,8 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     normalForce += load.force;
     normals_B += load.force * geom.normal;
     points_B += point_B;
-    if (geom.sphereOverlap > 0) stiffness += hertzStiffness(load.elasticForce, geom.sphereOverlap);
-    shares.push_back({load, load.force > 0 ? Vector3r(weighted_B / load.force) : point_B});
+    if (springs && geom.sphereOverlap > 0) stiffness += hertzStiffness(load.elasticForce, geom.sphereOverlap);
+    if (frictional) shares.push_back({load, load.force > 0 ? Vector3r(weighted_B / load.force) : point_B});
     summary.add(geom, load);
     if (contacts) {
       TriangleContact& c = contacts->emplace_back();
@@ -130,7 +132,7 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     summary.depth = std::max(summary.depth, geom.effectiveOverlap * geom.normal.dot(normal_B));
   TriangleContact* listed = contacts ? contacts->data() + listedFrom : nullptr;
   dropUnusedSpring(law, spring, data.timeStep, summary);
-  if (law.frictional()) {
+  if (frictional) {
     if (law.viscous()) {
       viscousFriction(geoms, shares, phys, R_WB, onBody_B, result, listed);
     } else {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 
+#include "pkg/geom/PolygonContacts.hpp"
+#include "pkg/geom/TrianglePlanes.hpp"
 #include "pkg/math/TriangleIntersections.hpp"
 
 namespace roundedmesh {
@@ -16,55 +18,65 @@ void Ig2_RoundedMesh_RoundedMesh_PressureGeom(const RoundedMesh& mesh1, const Ro
   const TriangleExits &exits1 = mesh1.exits(), &exits2 = mesh2.exits();
   const Matrix3r back = rotation.transpose();
   auto placed = [&](int t) { return PlacedTriangle{mesh2, t, rotation, translation}; };
-  auto add = [&](int s, int t, GeomTest result, const PressureGeom& geom) {
-    // The segment q1 q2 is no longer than delta_eff: nearer no exit of either triangle for nearly every pair of
-    // smooth bodies; the others are tested in full.
-    if (result &&
-        !(exits1.clear(s, mesh1.rounded(s).normal.dot(geom.normal), geom.effectiveOverlap) &&
-          exits2.clear(t, -mesh2.rounded(t).normal.dot(back * geom.normal), geom.effectiveOverlap)) &&
-        !overlapInsideBoth(mesh1, s, body2, t, geom, geom.effectiveOverlap > shallow))
+  // The segment q1 q2 is no longer than delta_eff: nearer no exit of either triangle for nearly every pair of smooth
+  // bodies (`surelyInside`); the others are tested in full.
+  auto add = [&](int s, int t, GeomTest result, const PressureGeom& geom, bool surelyInside) {
+    if (result && !surelyInside && !overlapInsideBoth(mesh1, s, body2, t, geom, geom.effectiveOverlap > shallow))
       result = {Rejection::ThroughBody};
     out.add(result, geom);
+  };
+  auto clear = [&](int s, int t, GeomTest result, const PressureGeom& geom) {
+    return result && exits1.clear(s, mesh1.rounded(s).normal.dot(geom.normal), geom.effectiveOverlap) &&
+           exits2.clear(t, -mesh2.rounded(t).normal.dot(back * geom.normal), geom.effectiveOverlap);
   };
 
   if (lanes == PolygonLanes::Never || (lanes == PolygonLanes::WherePaying && !triangleIntersectionsPay())) {
     PressureGeom geom;
-    for (const auto& [s, t] : candidates) add(s, t, triangleSphereGeom(mesh1, s, placed(t), motion, geom, model), geom);
+    for (const auto& [s, t] : candidates) {
+      const GeomTest result = triangleSphereGeom(mesh1, s, placed(t), motion, geom, model);
+      add(s, t, result, geom, clear(s, t, result, geom));
+    }
     return;
   }
-  // S of up to kBatch candidates clipped together: each candidate's tests before S, then S in lanes, then the rest.
-  constexpr int kBatch = TriangleIntersections::kCapacity;
-  std::array<PressureGeom, kBatch> geoms;
-  std::array<GeomTest, kBatch> results;
-  std::array<int, kBatch> laneOf;  // the batch's lane of each candidate that reached S
-  TriangleIntersections batch;
+  // Up to a batch of candidates at a time, in lanes: the tests before S and the contact planes, S, and for the
+  // paper's circles the rest; then each contact's exits one at a time.
+  constexpr int kBatch = TrianglePlanes::kCapacity;
+  TrianglePlanes planes;
+  TriangleIntersections clips;
+  PolygonContacts contacts;
+  PressureGeom geom;
   const int total = static_cast<int>(candidates.size());
   for (int first = 0; first < total; first += kBatch) {
-    const int count = std::min(kBatch, total - first);
-    batch.size = 0;
-    for (int k = 0; k < count; ++k) {
-      const auto& [s, t] = candidates[first + k];
-      results[k] = trianglePlane(mesh1, s, placed(t), geoms[k]);
-      if (!results[k]) continue;
-      laneOf[k] = batch.size;
-      batch.set(batch.size++, geoms[k].polygon, partnerPolygon(geoms[k]));
+    planes.size = std::min(kBatch, total - first);
+    for (int k = 0; k < planes.size; ++k) {
+      planes.s[k] = candidates[first + k][0];
+      planes.t[k] = candidates[first + k][1];
     }
-    intersectTriangles(batch);
-    for (int k = 0; k < count; ++k) {
+    trianglePlanes(mesh1, mesh2, rotation, translation, planes, clips);
+    intersectTriangles(clips);
+    if (model == CurvatureModel::Mean) polygonContacts(mesh1, mesh2, rotation, planes, clips, motion, contacts);
+    for (int k = 0; k < planes.size; ++k) {
       const auto& [s, t] = candidates[first + k];
-      PressureGeom& geom = geoms[k];
-      GeomTest result = results[k];
-      if (result) {
-        const int lane = laneOf[k];
-        if (batch.overflowed(lane)) {
-          clipByPartner(geom);
-        } else {
-          geom.polygon = batch.polygon(lane);
-          if (!geom.polygon.empty()) geom.effectivePoint = batch.closestPoint(lane);
-        }
-        result = triangleContactOnPolygon(mesh1, s, placed(t), motion, geom, model);
+      GeomTest result = planes.result(k);
+      if (!result) {
+        out.add(result, geom);
+        continue;
       }
-      add(s, t, result, geom);
+      planes.get(k, geom);
+      if (clips.overflowed(k)) {
+        geom.polygon = ConvexPolygon::triangle(geom.nodes[0], geom.nodes[1], geom.nodes[2]);  // P'
+        clipByPartner(geom);
+      } else if (model == CurvatureModel::Mean) {
+        result = contacts.result(k);
+        if (result) contacts.get(k, clips, s, t, geom);
+        add(s, t, result, geom, contacts.surelyInside(k));
+        continue;
+      } else {
+        geom.polygon = clips.polygon(k);
+        if (!geom.polygon.empty()) geom.effectivePoint = clips.closestPoint(k);
+      }
+      result = triangleContactOnPolygon(mesh1, s, placed(t), motion, geom, model);
+      add(s, t, result, geom, clear(s, t, result, geom));
     }
   }
 }

@@ -31,11 +31,10 @@ struct GivenSphere {
   }
 };
 
-// The partner as a triangle of body 2's mesh, each piece moved into body 1's frame when first asked for.
+// The partner as a triangle of body 2's mesh, each piece moved into body 1's frame when asked for.
 struct MovedTriangle {
-  explicit MovedTriangle(const PlacedTriangle& p)
-      : placed(p), rounded(p.mesh.rounded(p.triangle)), centre_(p.rotation * rounded.sphereCentre + p.translation) {}
-  const Vector3r& centre() const { return centre_; }
+  explicit MovedTriangle(const PlacedTriangle& p) : placed(p), rounded(p.mesh.rounded(p.triangle)) {}
+  Vector3r centre() const { return placed.rotation * rounded.sphereCentre + placed.translation; }
   Real radius() const { return rounded.radius; }
   int triangle() const { return placed.triangle; }
   Vector3r normal() const { return placed.rotation * rounded.normal; }
@@ -48,7 +47,6 @@ struct MovedTriangle {
 
   const PlacedTriangle placed;
   const RoundedTriangle& rounded;
-  Vector3r centre_;
 };
 
 // The tests before S, and the contact plane: fills geom's plane, radius, sphereOverlap, contactRadius, nodes, and

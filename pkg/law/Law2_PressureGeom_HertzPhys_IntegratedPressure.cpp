@@ -27,11 +27,11 @@ bool useDirectRegime(const ConvexPolygon& s, Real a, const PressureOptions& opti
 }
 
 // The integrals below are of the elastic pressure; `damp` then scales the load by Eq. 7's damping.
-NormalLoad integrateByQuadrature(const ConvexPolygon& polygon, const HertzPressure& pressure) {
+NormalLoad integrateByQuadrature(const ConvexPolygon& polygon, Real a, const HertzPressure& pressure) {
   // The pressure is zero outside the circle: integrating over S clipped to the circle's square gives the same
   // integral with every quadrature point where the pressure is.
   FanQuadrature points;
-  fanQuadrature(polygon.clippedToSquare(std::sqrt(pressure.contactRadiusSq)), pressure.contactRadiusSq, points);
+  fanQuadrature(polygon.clippedToSquare(a), pressure.contactRadiusSq, points);
   Real integral = 0;
   Vector2r moment = Vector2r::Zero();
   for (int j = 0; j < points.triangles; ++j) {
@@ -44,29 +44,32 @@ NormalLoad integrateByQuadrature(const ConvexPolygon& polygon, const HertzPressu
   return {pressure.amplitude * integral, pressure.amplitude * moment, Regime::Quadrature};
 }
 
-NormalLoad applyDirectly(const ConvexPolygon& polygon, const Vector2r& effectivePoint, const HertzPressure& pressure) {
-  const Real fraction = circlePolygonArea(std::sqrt(pressure.contactRadiusSq), polygon) / (M_PI * pressure.contactRadiusSq);
+NormalLoad applyDirectly(const ConvexPolygon& polygon, Real a, const Vector2r& effectivePoint,
+                         const HertzPressure& pressure) {
+  const Real fraction = circlePolygonArea(a, polygon) / (M_PI * pressure.contactRadiusSq);
   const Real integral = pressure.circleIntegral() * fraction;
   const Real force = pressure.amplitude * integral;
   return {force, force * leverTimesNormal(effectivePoint), Regime::Direct};
 }
 
-// The closed forms; `energyAmplitude`: e / (a^2 - r^2)^(3/2) = (4 E* / (3 pi R*^2)) [Pa/m^2].
-NormalLoad integrateExactly(const ConvexPolygon& polygon, const HertzPressure& pressure, Real energyAmplitude) {
-  const DiskPolygonIntegrals integrals = diskPolygonIntegrals(std::sqrt(pressure.contactRadiusSq), polygon);
+// The closed forms, and the energy with e / (a^2 - r^2)^(3/2) = 4 E* / (3 pi R*^2) [Pa/m^2] (hertzEnergyAmplitude).
+NormalLoad integrateExactly(const ConvexPolygon& polygon, Real a, const HertzPressure& pressure, const HertzPhys& phys,
+                            Real radius) {
+  const DiskPolygonIntegrals integrals = diskPolygonIntegrals(a, polygon);
   const Vector2r moment = leverTimesNormal(integrals.pressureMoment);
   NormalLoad load{pressure.amplitude * integrals.pressure, pressure.amplitude * moment, Regime::Exact};
-  load.elasticEnergy = energyAmplitude * integrals.energy;
+  load.elasticEnergy = hertzEnergyAmplitude(phys, radius) * integrals.energy;
   return load;
 }
 
+// `radius`: R* [m], for the exact regime's energy.
 NormalLoad integrate(const ConvexPolygon& polygon, const Vector2r& effectivePoint, const HertzPressure& pressure,
-                     const PressureOptions& options, Real energyAmplitude) {
+                     const PressureOptions& options, const HertzPhys& phys, Real radius) {
+  const Real a = std::sqrt(pressure.contactRadiusSq);
   if (options.regime == RegimeChoice::Exact || options.normal == NormalLaw::Energy)
-    return integrateExactly(polygon, pressure, energyAmplitude);
-  return useDirectRegime(polygon, std::sqrt(pressure.contactRadiusSq), options)
-             ? applyDirectly(polygon, effectivePoint, pressure)
-             : integrateByQuadrature(polygon, pressure);
+    return integrateExactly(polygon, a, pressure, phys, radius);
+  return useDirectRegime(polygon, a, options) ? applyDirectly(polygon, a, effectivePoint, pressure)
+                                              : integrateByQuadrature(polygon, a, pressure);
 }
 
 // Keeps the elastic load as its elastic part and scales it by the damping at its centre of pressure.
@@ -85,12 +88,11 @@ NormalLoad damp(NormalLoad load, const PressureGeom& geom, const HertzPhys& phys
 NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& geom, const HertzPhys& phys,
                                                           const PressureOptions& options) {
   const HertzPressure pressure{hertzElasticAmplitude(phys, geom.radius), geom.contactRadius * geom.contactRadius};
-  const Real energyAmplitude = hertzEnergyAmplitude(phys, geom.radius);
   NormalLoad load =
       geom.elliptical
           ? integrate(circlePolygon(geom), geom.toCircle * (geom.effectivePoint - geom.ellipseCentre), pressure,
-                      options, energyAmplitude)
-          : integrate(geom.polygon, geom.effectivePoint, pressure, options, energyAmplitude);
+                      options, phys, geom.radius)
+          : integrate(geom.polygon, geom.effectivePoint, pressure, options, phys, geom.radius);
   // A Hertz contact's potential, (2/5) F delta, where the pressure is integrated by the paper's rules.
   if (load.regime != Regime::Exact) load.elasticEnergy = 0.4 * load.force * geom.sphereOverlap;
   if (geom.elliptical) {

@@ -32,7 +32,7 @@ void ConvexPolygon::overflow() { throw std::logic_error("ConvexPolygon: more tha
 
 Real ConvexPolygon::area() const {
   Real twice = 0;
-  for (int i = 0; i < size_; ++i) twice += cross2(corners_[i], corners_[(i + 1) % size_]);
+  for (int i = 0; i < size_; ++i) twice += cross2(corners_[i], corners_[i + 1 < size_ ? i + 1 : 0]);
   return 0.5 * twice;
 }
 
@@ -40,7 +40,7 @@ bool ConvexPolygon::contains(const Vector2r& p) const {
   if (empty()) return false;
   for (int i = 0; i < size_; ++i) {
     const Vector2r& a = corners_[i];
-    const Vector2r& b = corners_[(i + 1) % size_];
+    const Vector2r& b = corners_[i + 1 < size_ ? i + 1 : 0];
     if (cross2(b - a, p - a) < 0) return false;
   }
   return true;
@@ -104,17 +104,30 @@ ConvexPolygon ConvexPolygon::intersection(const ConvexPolygon& clip) const {
 
 ConvexPolygon ConvexPolygon::clippedToSquare(Real h) const {
   const ConvexPolygon square = rectangle(Vector2r::Zero(), h, h);
+  // Bit k: a corner lies beyond the square's edge k, where clipInto's side of it, cross2(edge, p - from), is not >= 0.
+  // For the edges from (-h, -h), (h, -h), (h, h), (-h, h) that side is 2h (p_y + h), 2h (h - p_x), 2h (h - p_y),
+  // 2h (p_x + h) (the other product is 0 times a finite number), and a sum or difference of two doubles has the sign
+  // of the exact one: for finite corners these are clipInto's own tests (where the product underflows to 0, clipInto
+  // keeps every corner as it is).
+  auto beyond = [h](const ConvexPolygon& polygon) {
+    unsigned edges = 0;
+    for (int k = 0; k < polygon.size(); ++k) {
+      const Vector2r& p = polygon[k];
+      edges |= unsigned(!(p.y() >= -h)) | unsigned(!(p.x() <= h)) << 1 | unsigned(!(p.y() <= h)) << 2 |
+               unsigned(!(p.x() >= -h)) << 3;
+    }
+    return edges;
+  };
   ConvexPolygon buffers[2];
   int spare = 0;
   const ConvexPolygon* current = this;
-  for (int i = 0; i < square.size() && !current->empty(); ++i) {
-    const Vector2r &from = square[i], &to = square[(i + 1) % square.size()];
-    bool beyond = false;  // a corner that clipInto would not keep as it is
-    for (int k = 0; k < current->size(); ++k) beyond |= !(cross2(to - from, (*current)[k] - from) >= 0);
-    if (!beyond) continue;
-    current->clipInto(from, to, buffers[spare]);
+  unsigned edges = beyond(*this);
+  for (int edge = 0; edge < 4 && !current->empty(); ++edge) {
+    if (!(edges >> edge & 1u)) continue;
+    current->clipInto(square[edge], square[edge < 3 ? edge + 1 : 0], buffers[spare]);
     current = &buffers[spare];
     spare = 1 - spare;
+    edges = beyond(*current);
   }
   return *current;
 }

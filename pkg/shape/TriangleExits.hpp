@@ -41,6 +41,8 @@ class TriangleExits {
   // How far such a line surely stays inside: the distance to the nearest exit of triangle t at that level, or
   // reach() if none is nearer [m].
   Real clearance(int t, Real cosine) const { return nearest_[t][level(cosine)]; }
+  // The same for every triangle and level: triangle t's at level k is clearances()[kLevels t + k] [m].
+  const Real* clearances() const { return nearest_.front().data(); }
   // Whether such a line surely stays inside for `length` [m]: no exit at its angle is nearer.
   bool clear(int t, Real cosine, Real length) const { return length < clearance(t, cosine); }
   // Whether the segment from `entry`, a point of triangle t, to `end` (below the plane of t) surely stays in the
