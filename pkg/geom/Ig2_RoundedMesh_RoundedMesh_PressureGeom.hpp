@@ -1,6 +1,7 @@
 // Ig2 functor: the triangles of two rounded bodies against each other (Appendix B): every candidate pair
 // (TrianglePairCandidates.hpp) goes through triangleSphereGeom with body 2's triangle placed in body 1's frame (on
-// AVX-512, in batches whose polygons S are clipped together: TriangleIntersections.hpp, the same result bit for bit);
+// AVX-512, in batches of 16 through three stages in lanes: the contact planes, TrianglePlanes.hpp; the polygons S,
+// TriangleIntersections.hpp; for the paper's circles the rest, PolygonContacts.hpp; the same result bit for bit);
 // the segment between the two caps must lie inside both bodies (TriangleExits.hpp, DeepContactCriterion.hpp; the
 // distance fields first for a pair deeper than `shallow` [m]).
 // Inputs: body 2's pose in body 1's frame (x1 = rotation * x2 + translation), the candidates, and body 2's
@@ -15,7 +16,7 @@
 
 namespace roundedmesh {
 
-// Whether the polygons S are clipped in lanes: where that pays (triangleIntersectionsPay()), or always, or never, for
+// Whether the candidates go through the lanes: where that pays (triangleIntersectionsPay()), or always, or never, for
 // tests and benchmarks that compare the two ways on any processor. Both give the same contacts bit for bit.
 enum class PolygonLanes { WherePaying, Always, Never };
 

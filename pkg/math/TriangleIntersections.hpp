@@ -40,7 +40,8 @@ void intersectTriangles(TriangleIntersections& batch);
 
 // Whether the lanes are quicker than ConvexPolygon one pair at a time on the vector unit chosen here: on AVX-512 (8
 // doubles) they are; on AVX2 (4) the masked placement of each clipped corner costs about what the branches it replaces
-// cost (doc/benchmarks.md, Speed III, steps 5 and 8).
+// cost (doc/benchmarks.md, Speed III, steps 5 and 8). The narrow phase's other lanes (TrianglePlanes.hpp,
+// PolygonContacts.hpp) run where these do.
 bool triangleIntersectionsPay();
 
 }  // namespace roundedmesh
