@@ -79,7 +79,6 @@ struct Verdict {
   }
 };
 
-
 // The square of the distance from the origin to a plane triangle (0 inside), and whether it is too thin for its
 // inside test to be sure of its sign (distanceFromOrigin in TrianglePairCandidates.cpp, the reference).
 V SquaredDistanceFromOrigin(const V x[3], const V y[3], M& thin) {
@@ -227,7 +226,8 @@ HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k,
   u[2] = hn::IfThenElseZero(zLargest, n[1]);
   const V uLength = hn::Sqrt(Dot3(u, u));
   for (V& ui : u) ui = ui / uLength;
-  const V v[3] = {n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]};
+  V v[3];
+  Cross3(n, u, v);
   V px[3], py[3], qx[3], qy[3], farSq = zero;
   for (int corner = 0; corner < 3; ++corner) {
     V xp[3], xq0[3], xq[3];

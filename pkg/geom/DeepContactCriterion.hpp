@@ -40,6 +40,15 @@ inline Real lineToTriangle(const RoundedMesh& mesh, int s, const Vector3r& x, co
   return mesh.rounded(s).normal.dot(mesh.vertices()[mesh.triangles()[s][0]] - x) / mesh.rounded(s).normal.dot(d);
 }
 
+// The quick test before overlapInsideBoth: the segment q1 q2 along n12, no longer than delta_eff, lies nearer no exit of
+// triangle s of mesh1 or t of mesh2 at its angle (TriangleExits::clear), and so surely stays inside both bodies. `back`
+// turns body 1's frame into body 2's (the transpose of body 2's rotation into body 1's frame).
+inline bool clearOfExits(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& back,
+                         const PressureGeom& geom) {
+  return mesh1.exits().clear(s, mesh1.rounded(s).normal.dot(geom.normal), geom.effectiveOverlap) &&
+         mesh2.exits().clear(t, -mesh2.rounded(t).normal.dot(back * geom.normal), geom.effectiveOverlap);
+}
+
 // The segment test for triangle s of mesh1 and triangle t of body 2 in contact as `geom` (body 1's frame); `deep`:
 // the pair is deeper than the Hertz range, and the distance fields are asked first.
 bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2, int t, const PressureGeom& geom,

@@ -1,7 +1,6 @@
 #include "pkg/geom/Ig2_RoundedMesh_RoundedMesh_PressureGeom.hpp"
 
 #include <algorithm>
-#include <array>
 
 #include "pkg/geom/PolygonContacts.hpp"
 #include "pkg/geom/TrianglePlanes.hpp"
@@ -15,7 +14,6 @@ void Ig2_RoundedMesh_RoundedMesh_PressureGeom(const RoundedMesh& mesh1, const Ro
                                               const RelativeMotion& motion, GeomOutput out, CurvatureModel model,
                                               PolygonLanes lanes) {
   const PlacedMesh body2{mesh2, rotation, translation};
-  const TriangleExits &exits1 = mesh1.exits(), &exits2 = mesh2.exits();
   const Matrix3r back = rotation.transpose();
   auto placed = [&](int t) { return PlacedTriangle{mesh2, t, rotation, translation}; };
   // The segment q1 q2 is no longer than delta_eff: nearer no exit of either triangle for nearly every pair of smooth
@@ -26,8 +24,7 @@ void Ig2_RoundedMesh_RoundedMesh_PressureGeom(const RoundedMesh& mesh1, const Ro
     out.add(result, geom);
   };
   auto clear = [&](int s, int t, GeomTest result, const PressureGeom& geom) {
-    return result && exits1.clear(s, mesh1.rounded(s).normal.dot(geom.normal), geom.effectiveOverlap) &&
-           exits2.clear(t, -mesh2.rounded(t).normal.dot(back * geom.normal), geom.effectiveOverlap);
+    return result && clearOfExits(mesh1, s, mesh2, t, back, geom);
   };
 
   if (lanes == PolygonLanes::Never || (lanes == PolygonLanes::WherePaying && !triangleIntersectionsPay())) {

@@ -43,15 +43,9 @@ using D = hn::CappedTag<double, PolygonContacts::kCapacity>;
 using V = hn::Vec<D>;
 using M = hn::Mask<D>;
 
-// Eigen's cross product of 3-vectors.
-HWY_INLINE void Cross(const V a[3], const V b[3], V out[3]) {
-  out[0] = hn::Sub(hn::Mul(a[1], b[2]), hn::Mul(a[2], b[1]));
-  out[1] = hn::Sub(hn::Mul(a[2], b[0]), hn::Mul(a[0], b[2]));
-  out[2] = hn::Sub(hn::Mul(a[0], b[1]), hn::Mul(a[1], b[0]));
-}
 // RelativeMotion::at: linear + angular x x.
 HWY_INLINE void VelocityAt(const V linear[3], const V angular[3], const V x[3], V out[3]) {
-  Cross(angular, x, out);
+  Cross3(angular, x, out);
   for (int i = 0; i < 3; ++i) out[i] = hn::Add(linear[i], out[i]);
 }
 // std::max(x, 0): x unless x < 0, a NaN kept.
@@ -120,9 +114,9 @@ void PolygonContactLanes(const polygons::Batch& batch, PolygonContacts& out) {
     Load3(planes.tangent2, lane, t2);
     VelocityAt(linear, angular, c, v);
     hn::Store(hn::Neg(Dot3(n, v)), d, out.overlapRate + lane);
-    Cross(angular, t1, v);
+    Cross3(angular, t1, v);
     hn::Store(hn::Neg(Dot3(n, v)), d, out.slopeX + lane);
-    Cross(angular, t2, v);
+    Cross3(angular, t2, v);
     hn::Store(hn::Neg(Dot3(n, v)), d, out.slopeY + lane);
     V point[3];
     for (int i = 0; i < 3; ++i) point[i] = hn::Add(hn::Add(c[i], hn::Mul(ex, t1[i])), hn::Mul(ey, t2[i]));

@@ -37,7 +37,8 @@ struct PolygonContacts {
   void get(int k, const TriangleIntersections& clips, int triangle, int partnerTriangle, PressureGeom& geom) const;
 };
 
-// Fills the lanes [0, planes.size) of `contacts`; body 2 placed in body 1's frame by `rotation` (x1 = rotation x2 + t).
+// Fills the lanes [0, planes.size) of `contacts` from `planes` and `clips` as trianglePlanes and intersectTriangles left
+// them (the lanes past planes.size included); body 2 placed in body 1's frame by `rotation` (x1 = rotation x2 + t).
 void polygonContacts(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
                      const TrianglePlanes& planes, const TriangleIntersections& clips, const RelativeMotion& motion,
                      PolygonContacts& contacts);

@@ -123,9 +123,8 @@ void TrianglePlaneLanes(const planes::Pose& pose, TrianglePlanes& out, TriangleI
     const V t1[3] = {hn::IfThenElse(offAxis, hn::Mul(hn::Neg(n[1]), inverseXY), zero),
                      hn::IfThenElse(offAxis, hn::Mul(n[0], inverseXY), hn::Mul(hn::Neg(n[2]), inverseYZ)),
                      hn::IfThenElseZero(hn::Not(offAxis), hn::Mul(n[1], inverseYZ))};
-    const V t2[3] = {hn::Sub(hn::Mul(n[1], t1[2]), hn::Mul(n[2], t1[1])),
-                     hn::Sub(hn::Mul(n[2], t1[0]), hn::Mul(n[0], t1[2])),
-                     hn::Sub(hn::Mul(n[0], t1[1]), hn::Mul(n[1], t1[0]))};
+    V t2[3];
+    Cross3(n, t1, t2);
     for (int i = 0; i < 3; ++i) {
       hn::Store(c[i], d, out.centre[i] + lane);
       hn::Store(n[i], d, out.normal[i] + lane);

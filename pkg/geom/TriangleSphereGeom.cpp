@@ -13,8 +13,8 @@ namespace {
 // triangle): if it exceeds a + rho, the triangle's projection misses the contact circle.
 bool missesContactCircle(const Vector3r& x, Real rho, const Vector3r& c, const Vector3r& n, Real a) {
   const Vector3r offset = x - c;
-  const Real inPlaneSq = offset.squaredNorm() - std::pow(offset.dot(n), 2);
-  return inPlaneSq > std::pow(a + rho, 2);
+  const Real height = offset.dot(n), reach = a + rho;
+  return offset.squaredNorm() - height * height > reach * reach;
 }
 
 // The partner as a ContactSphere already in body 1's frame.

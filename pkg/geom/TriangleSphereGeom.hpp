@@ -55,8 +55,9 @@ GeomTest triangleSphereGeom(const RoundedMesh& mesh, int triangle, const PlacedT
                             const RelativeMotion& motion, PressureGeom& geom,
                             CurvatureModel model = CurvatureModel::Mean);
 
-// triangleSphereGeom of a triangle partner in two stages around S, for a caller that clips many candidates' S at once
-// (TriangleIntersections.hpp); together they give triangleSphereGeom's result and geom bit for bit.
+// triangleSphereGeom of a triangle partner in two stages around S; together they give triangleSphereGeom's result and
+// geom bit for bit. They are the references of the batched narrow phase's lanes (TrianglePlanes.hpp,
+// PolygonContacts.hpp), and the batched narrow phase takes the second for a lane whose S overflows and for ellipses.
 //   trianglePlane: the tests before S, and the contact plane; P' -> geom.polygon, Q's corners -> geom.partnerNodes.
 //   triangleContactOnPolygon: with S = P' ∩ Q' in geom.polygon and, if S is not empty, its point closest to c in
 //   geom.effectivePoint: the rest.

@@ -1,5 +1,5 @@
 // 3-vectors as three Highway vectors, one lane per item of a batch: the few operations the batched kernels share
-// (BatchedCandidates.cpp, TrianglePlanes.cpp), with the sums in the order Eigen evaluates them for 3-vectors in the
+// (BatchedCandidates.cpp, TrianglePlanes.cpp, PolygonContacts.cpp), with the sums in the order Eigen evaluates them for 3-vectors in the
 // portable build (SSE2, two doubles per packet): a dot product left to right, (a0 b0 + a1 b1) + a2 b2; a 3 x 3 matrix
 // times a vector by rows 0 and 1 as one packet, left to right, and row 2 as a reduction halved recursively,
 // m20 x0 + (m21 x1 + m22 x2). Included inside each kernel file's per-target code (Highway's foreach_target), hence
@@ -26,7 +26,16 @@ HWY_INLINE V Dot3(const V a[3], const V b[3]) {
   return hn::Add(hn::Add(hn::Mul(a[0], b[0]), hn::Mul(a[1], b[1])), hn::Mul(a[2], b[2]));
 }
 
-// m x.
+// a x b, as Eigen's cross product.
+template <class V>
+HWY_INLINE void Cross3(const V a[3], const V b[3], V out[3]) {
+  namespace hn = hwy::HWY_NAMESPACE;
+  out[0] = hn::Sub(hn::Mul(a[1], b[2]), hn::Mul(a[2], b[1]));
+  out[1] = hn::Sub(hn::Mul(a[2], b[0]), hn::Mul(a[0], b[2]));
+  out[2] = hn::Sub(hn::Mul(a[0], b[1]), hn::Mul(a[1], b[0]));
+}
+
+// The 3 x 3 matrix m times x.
 template <class V>
 HWY_INLINE void Rotate3(const V (&m)[3][3], const V x[3], V out[3]) {
   namespace hn = hwy::HWY_NAMESPACE;

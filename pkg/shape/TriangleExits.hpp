@@ -42,7 +42,7 @@ class TriangleExits {
   // reach() if none is nearer [m].
   Real clearance(int t, Real cosine) const { return nearest_[t][level(cosine)]; }
   // The same for every triangle and level: triangle t's at level k is clearances()[kLevels t + k] [m].
-  const Real* clearances() const { return nearest_.front().data(); }
+  const Real* clearances() const { return nearest_.empty() ? nullptr : nearest_.front().data(); }
   // Whether such a line surely stays inside for `length` [m]: no exit at its angle is nearer.
   bool clear(int t, Real cosine, Real length) const { return length < clearance(t, cosine); }
   // Whether the segment from `entry`, a point of triangle t, to `end` (below the plane of t) surely stays in the
@@ -57,7 +57,8 @@ class TriangleExits {
     int level;
   };
   Real reach_ = 0;
-  std::vector<std::array<Real, kLevels>> nearest_;
+  std::vector<std::array<Real, kLevels>> nearest_;  // contiguous: clearances()
+  static_assert(sizeof(std::array<Real, kLevels>) == kLevels * sizeof(Real));
   std::vector<int> first_;  // triangle t's exits are exits_[first_[t]], ..., exits_[first_[t + 1] - 1]
   std::vector<Exit> exits_;
 };

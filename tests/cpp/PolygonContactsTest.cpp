@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "hwy/targets.h"
+#include "pkg/geom/DeepContactCriterion.hpp"
 #include "pkg/geom/TriangleSphereGeom.hpp"
 #include "tests/support/HighwayTargets.hpp"
 #include "tests/support/LibraryLanes.hpp"
@@ -56,11 +57,8 @@ TEST(PolygonContacts, EveryLaneIsTheScalarPathsBitForBit) {
       ASSERT_EQ(geom.elliptical, reference.elliptical) << lane.where;
       ASSERT_TRUE(sameBits(geom.ellipseCentre, reference.ellipseCentre)) << lane.where;
       ASSERT_TRUE(sameBits(geom.toCircle, reference.toCircle)) << lane.where;
-      const Real length = reference.effectiveOverlap;
-      const bool clear =
-          lane.mesh1.exits().clear(lane.s, lane.mesh1.rounded(lane.s).normal.dot(reference.normal), length) &&
-          lane.mesh2.exits().clear(lane.t, -lane.mesh2.rounded(lane.t).normal.dot(lane.rotation.transpose() * reference.normal),
-                                   length);
+      const Matrix3r back = lane.rotation.transpose();
+      const bool clear = clearOfExits(lane.mesh1, lane.s, lane.mesh2, lane.t, back, reference);
       ASSERT_EQ(lane.contacts.surelyInside(lane.k), clear) << lane.where;
       notClear += !clear;
     });

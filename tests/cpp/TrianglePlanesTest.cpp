@@ -3,8 +3,9 @@
 // from grazing to deep, turned at random: every rejection and pairs that pass), and for random triangle pairs of every
 // kind of the robustness suite (general, coplanar, edge on edge; slivers), in batches of 1 to 16 lanes, on every
 // instruction set the processor has and the build compiled. Each lane's rejection, and where it passes every field
-// trianglePlane fills and P' and Q' as S's lanes take them (ConvexPolygon::triangle's order). No tolerance: the lanes
-// run trianglePlane's operations in its order.
+// trianglePlane fills and P' and Q' as S's lanes take them (ConvexPolygon::triangle's order); and contact normals along
+// z and within 1e-12 of it, either side of unitOrthogonal's test. No tolerance: the lanes run trianglePlane's operations
+// in its order.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -82,6 +83,25 @@ TEST(TrianglePlanes, EveryLaneIsTrianglePlanesBitForBit) {
       checkLane(pair.p, pair.q, Matrix3r::Identity(), Vector3r::Zero(), planes, clips, 0, 0, 0,
                 "triangle pair " + std::to_string(trial), tally);
       if (HasFatalFailure()) return;
+    }
+    // Normals along z and within 1e-12 of it, where unitOrthogonal takes its other branch: two triangles stacked
+    // along z, body 2 moved sideways by a fraction f of their spheres' distance, either side of that branch's test.
+    const std::array<Vector3r, 3> below = {Vector3r(0, 0, 0), Vector3r(1e-2, 0, 0), Vector3r(0, 1e-2, 0)};
+    const std::array<Vector3r, 3> above = {below[0] + Vector3r(0, 0, 1e-4), below[2] + Vector3r(0, 0, 1e-4),
+                                           below[1] + Vector3r(0, 0, 1e-4)};
+    const RoundedMesh p = test::singleTriangle(below, 0.05), q = test::singleTriangle(above, 0.05);
+    const Real apart = (q.rounded(0).sphereCentre - p.rounded(0).sphereCentre).norm();
+    for (const Real f : {0.0, 0.5e-12, 0.999e-12, 1.001e-12, 2e-12, 1e-6}) {
+      planes.size = 1;
+      planes.s[0] = planes.t[0] = 0;
+      const Vector3r sideways(f * apart, 0, 0);
+      trianglePlanes(p, q, Matrix3r::Identity(), sideways, planes, clips);
+      const long passed = tally.passed;
+      checkLane(p, q, Matrix3r::Identity(), sideways, planes, clips, 0, 0, 0, "stacked, f = " + std::to_string(f), tally);
+      if (HasFatalFailure()) return;
+      EXPECT_EQ(tally.passed, passed + 1) << "stacked, f = " << f;
+      // unitOrthogonal's branch: (0, -n_z, n_y) / |(n_y, n_z)| within 1e-12 of z, else (-n_y, n_x, 0) / |(n_x, n_y)|.
+      EXPECT_EQ(planes.tangent1[f < 1e-12 ? 0 : 2][0], 0.0) << "stacked, f = " << f;
     }
     // Each outcome is common, so that every test's mask is exercised both ways (of 323,000 lanes: 55,000 pass, 1,900
     // face away, 73,000 do not overlap, 194,000 miss the circle).
