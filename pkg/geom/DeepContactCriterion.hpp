@@ -40,14 +40,23 @@ inline Real lineToTriangle(const RoundedMesh& mesh, int s, const Vector3r& x, co
   return mesh.rounded(s).normal.dot(mesh.vertices()[mesh.triangles()[s][0]] - x) / mesh.rounded(s).normal.dot(d);
 }
 
-// The quick test before overlapInsideBoth: the segment q1 q2 along n12, no longer than delta_eff, lies nearer no exit of
-// triangle s of mesh1 or t of mesh2 at its angle (TriangleExits::clear), and so surely stays inside both bodies. `back`
-// turns body 1's frame into body 2's (the transpose of body 2's rotation into body 1's frame).
-inline bool clearOfExits(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& back,
-                         const PressureGeom& geom) {
-  return mesh1.exits().clear(s, mesh1.rounded(s).normal.dot(geom.normal), geom.effectiveOverlap) &&
-         mesh2.exits().clear(t, -mesh2.rounded(t).normal.dot(back * geom.normal), geom.effectiveOverlap);
-}
+// The quick test before overlapInsideBoth, for one body pair (body 2 placed in body 1's frame by `rotation`): the
+// segment q1 q2 along n12, no longer than delta_eff, lies nearer no exit of triangle s of body 1 or t of body 2 at its
+// angle (TriangleExits::clear), and so surely stays inside both bodies. The meshes' exits are looked up once per pair.
+struct PairExits {
+  PairExits(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation)
+      : mesh1(mesh1), mesh2(mesh2), exits1(mesh1.exits()), exits2(mesh2.exits()), back(rotation.transpose()) {}
+  bool clear(int s, int t, const PressureGeom& geom) const {
+    return exits1.clear(s, mesh1.rounded(s).normal.dot(geom.normal), geom.effectiveOverlap) &&
+           exits2.clear(t, -mesh2.rounded(t).normal.dot(back * geom.normal), geom.effectiveOverlap);
+  }
+
+  const RoundedMesh& mesh1;
+  const RoundedMesh& mesh2;
+  const TriangleExits& exits1;
+  const TriangleExits& exits2;
+  const Matrix3r back;  // body 1's frame into body 2's
+};
 
 // The segment test for triangle s of mesh1 and triangle t of body 2 in contact as `geom` (body 1's frame); `deep`:
 // the pair is deeper than the Hertz range, and the distance fields are asked first.

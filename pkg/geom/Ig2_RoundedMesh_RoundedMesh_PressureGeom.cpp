@@ -14,7 +14,7 @@ void Ig2_RoundedMesh_RoundedMesh_PressureGeom(const RoundedMesh& mesh1, const Ro
                                               const RelativeMotion& motion, GeomOutput out, CurvatureModel model,
                                               PolygonLanes lanes) {
   const PlacedMesh body2{mesh2, rotation, translation};
-  const Matrix3r back = rotation.transpose();
+  const PairExits exits(mesh1, mesh2, rotation);
   auto placed = [&](int t) { return PlacedTriangle{mesh2, t, rotation, translation}; };
   // The segment q1 q2 is no longer than delta_eff: nearer no exit of either triangle for nearly every pair of smooth
   // bodies (`surelyInside`); the others are tested in full.
@@ -24,7 +24,7 @@ void Ig2_RoundedMesh_RoundedMesh_PressureGeom(const RoundedMesh& mesh1, const Ro
     out.add(result, geom);
   };
   auto clear = [&](int s, int t, GeomTest result, const PressureGeom& geom) {
-    return result && clearOfExits(mesh1, s, mesh2, t, back, geom);
+    return result && exits.clear(s, t, geom);
   };
 
   if (lanes == PolygonLanes::Never || (lanes == PolygonLanes::WherePaying && !triangleIntersectionsPay())) {

@@ -57,8 +57,7 @@ TEST(PolygonContacts, EveryLaneIsTheScalarPathsBitForBit) {
       ASSERT_EQ(geom.elliptical, reference.elliptical) << lane.where;
       ASSERT_TRUE(sameBits(geom.ellipseCentre, reference.ellipseCentre)) << lane.where;
       ASSERT_TRUE(sameBits(geom.toCircle, reference.toCircle)) << lane.where;
-      const Matrix3r back = lane.rotation.transpose();
-      const bool clear = clearOfExits(lane.mesh1, lane.s, lane.mesh2, lane.t, back, reference);
+      const bool clear = PairExits(lane.mesh1, lane.mesh2, lane.rotation).clear(lane.s, lane.t, reference);
       ASSERT_EQ(lane.contacts.surelyInside(lane.k), clear) << lane.where;
       notClear += !clear;
     });
