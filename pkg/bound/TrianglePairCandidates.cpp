@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "pkg/bound/BatchedCandidates.hpp"
+#include "pkg/bound/BoxesInShell.hpp"
 #include "pkg/bound/CapReach.hpp"
 #include "pkg/shape/TriangleCorners.hpp"
 
@@ -160,15 +161,16 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
     pairs.insert(pairs.end(), touchable.begin(), touchable.end());
     inBoxes.clear();
   };
+  thread_local BoxColumns boxes1;
+  thread_local std::vector<int64_t> inShell;
+  boxes1.assign(mesh1.tree().triangleBoxes(), reaching1);
   for (int t : reaching2) {
     const AlignedBox3r& box2 = mesh2.tree().triangleBox(t);
-    const AlignedBox3r within = transformedBox(box2, rotation, translation, depth + skin);
-    const AlignedBox3r nearer = transformedBox(box2, rotation, translation, shallow + skin);
-    for (int s : reaching1) {
-      const AlignedBox3r& box1 = mesh1.tree().triangleBox(s);
-      // Not too far, and not found above.
-      if (!box1.intersects(within) || box1.intersects(nearer)) continue;
-      inBoxes.push_back({s, t});
+    // Not too far, and not found above.
+    boxesInShell(boxes1, transformedBox(box2, rotation, translation, depth + skin),
+                 transformedBox(box2, rotation, translation, shallow + skin), inShell);
+    for (const int64_t i : inShell) {
+      inBoxes.push_back({reaching1[i], t});
       if (inBoxes.size() == kChunk) filter();
     }
   }

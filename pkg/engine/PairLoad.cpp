@@ -5,6 +5,7 @@
 
 #include "pkg/engine/PairFriction.hpp"
 #include "pkg/engine/PairGeometry.hpp"
+#include "pkg/law/DampedLoads.hpp"
 #include "pkg/law/PairLaw.hpp"
 
 namespace roundedmesh {
@@ -87,15 +88,14 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   const size_t listedFrom = contacts ? contacts->size() : 0;
   const bool needsPartner = law.normal->needsPartner;
   const PartnerFrame frame = needsPartner ? partnerFrame(model, pair, s1, s2, R_WB.transpose()) : PartnerFrame();
-  for (const PressureGeom& geom : geoms) {
-    const NormalLoad load = law.normalLoad(geom);
+  // One contact's force on the bodies and its share of the pair's sums, added in the contacts' order.
+  auto addContact = [&](const PressureGeom& geom, const NormalLoad& load, const std::array<Real, 3>& forces) {
     ++(load.regime == Regime::Direct  ? result.statistics.directContacts
        : load.regime == Regime::Exact ? result.statistics.exactContacts
                                       : result.statistics.quadratureContacts);
     const Triangle& corners = mesh.triangles()[geom.triangle];
     const std::array<Vector3r, 3> x_B = {mesh.vertices()[corners[0]], mesh.vertices()[corners[1]],
                                          mesh.vertices()[corners[2]]};
-    const std::array<Real, 3> forces = nodeForces(geom.nodes, load);
     const EnergyPartner partner = needsPartner ? frame.partner(geom) : EnergyPartner{};
     law.normal->apply({geom, load, x_B, forces, mesh.rounded(geom.triangle).sphereCentre, partner, phys}, onBody_B);
     const Vector3r point_B = planePoint(geom, geom.effectivePoint);
@@ -119,6 +119,17 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
       c.nodeForces = forces;
       if (geom.partnerTriangle >= 0) c.partnerNodeForces = nodeForces(geom.partnerNodes, load);
     }
+  };
+  // Law2 in two stages, 16 contacts at a time: each contact's elastic load, then their damping and node forces
+  // (Eq. 15) in lanes.
+  thread_local DampedLoads batch;
+  batch.damping = phys.damping;
+  const int count = static_cast<int>(geoms.size());
+  for (int first = 0; first < count; first += DampedLoads::kCapacity) {
+    batch.size = std::min(DampedLoads::kCapacity, count - first);
+    for (int k = 0; k < batch.size; ++k) batch.set(k, law.elasticLoad(geoms[first + k]), geoms[first + k]);
+    dampLoads(batch);
+    for (int k = 0; k < batch.size; ++k) addContact(geoms[first + k], batch.load(k), batch.nodeForces(k));
   }
   summary.triangleContacts = static_cast<int>(geoms.size());
   const bool loaded = normalForce > 0;

@@ -72,21 +72,9 @@ NormalLoad integrate(const ConvexPolygon& polygon, const Vector2r& effectivePoin
                                               : integrateByQuadrature(polygon, a, pressure);
 }
 
-// Keeps the elastic load as its elastic part and scales it by the damping at its centre of pressure.
-NormalLoad damp(NormalLoad load, const PressureGeom& geom, const HertzPhys& phys) {
-  load.elasticForce = load.force;
-  load.elasticMoment = load.moment;
-  load.overlapRate = load.force > 0 ? overlapRateAt(geom, centreOfPressure(load)) : geom.overlapRate;
-  const Real factor = dampingFactor(phys, geom.sphereOverlap, load.overlapRate);
-  load.force *= factor;
-  load.moment *= factor;
-  return load;
-}
-
 }  // namespace
 
-NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& geom, const HertzPhys& phys,
-                                                          const PressureOptions& options) {
+NormalLoad elasticLoad(const PressureGeom& geom, const HertzPhys& phys, const PressureOptions& options) {
   const HertzPressure pressure{hertzElasticAmplitude(phys, geom.radius), geom.contactRadius * geom.contactRadius};
   NormalLoad load =
       geom.elliptical
@@ -100,7 +88,22 @@ NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& ge
     const Vector2r firstMoment(-load.moment.y(), load.moment.x());
     load.moment = leverTimesNormal(load.force * geom.ellipseCentre + geom.toCircle.inverse() * firstMoment);
   }
-  return damp(load, geom, phys);
+  return load;
+}
+
+NormalLoad dampedLoad(NormalLoad load, const PressureGeom& geom, const HertzPhys& phys) {
+  load.elasticForce = load.force;
+  load.elasticMoment = load.moment;
+  load.overlapRate = load.force > 0 ? overlapRateAt(geom, centreOfPressure(load)) : geom.overlapRate;
+  const Real factor = dampingFactor(phys, geom.sphereOverlap, load.overlapRate);
+  load.force *= factor;
+  load.moment *= factor;
+  return load;
+}
+
+NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& geom, const HertzPhys& phys,
+                                                          const PressureOptions& options) {
+  return dampedLoad(elasticLoad(geom, phys, options), geom, phys);
 }
 
 }  // namespace roundedmesh

@@ -28,10 +28,8 @@ struct PairLaw {
         normal(&normalLaw(options.normal)),
         friction(frictionLaw) {}
 
-  // Law2 on one triangle contact.
-  NormalLoad normalLoad(const PressureGeom& geom) const {
-    return Law2_PressureGeom_HertzPhys_IntegratedPressure(geom, phys, pressure);
-  }
+  // Law2's elastic load of one triangle contact, which the engine damps with the pair's others (DampedLoads.hpp).
+  NormalLoad elasticLoad(const PressureGeom& geom) const { return roundedmesh::elasticLoad(geom, phys, pressure); }
   // The load of a contact that is one whole circle (two spheres, a sphere on a flat partner): Eq. 7 itself.
   NormalLoad wholeCircleLoad(const PressureGeom& geom) const {
     PressureOptions whole = pressure;

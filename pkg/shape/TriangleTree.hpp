@@ -32,6 +32,7 @@ class TriangleTree {
 
   const std::vector<Node>& nodes() const { return nodes_; }
   const AlignedBox3r& triangleBox(int t) const { return boxes_[t]; }
+  const std::vector<AlignedBox3r>& triangleBoxes() const { return boxes_; }
 
   // Calls visit(t) for every triangle t whose box passes `test` (a predicate on an AlignedBox3r that must hold
   // for every box containing one that passes: it is applied to nodes before their triangles).

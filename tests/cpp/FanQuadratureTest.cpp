@@ -9,10 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <vector>
 
-#include "hwy/targets.h"
 #include "pkg/law/FanQuadrature.hpp"
 #include "pkg/math/DunavantRule.hpp"
 #include "tests/support/HighwayTargets.hpp"
@@ -21,7 +19,7 @@
 namespace roundedmesh {
 namespace {
 
-bool sameBits(Real a, Real b) { return std::memcmp(&a, &b, sizeof(Real)) == 0; }
+using test::sameBits;
 
 // A convex polygon of 3 to 10 corners around the origin: a random triangle, clipped by another (up to 6 corners)
 // and by a square (up to 10) some of the time, or a regular polygon of 3 to 10 corners turned and moved at random.
@@ -49,11 +47,7 @@ ConvexPolygon randomPolygon(test::RandomSource& random, Real size) {
 
 TEST(FanQuadrature, RandomPolygonsGiveTheReferencePointsBitForBit) {
   const QuadratureColumns& q = dunavant8Columns();
-  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
-  ASSERT_FALSE(targets.empty());
-  for (const int64_t target : targets) {
-    const test::TargetForTest chosen(target);
-    SCOPED_TRACE(hwy::TargetName(target));
+  test::forEachInstructionSet([&](int64_t) {
     test::RandomSource random(4139);
     long lanes = 0, outside = 0, inside = 0;
     int largest = 0;
@@ -84,7 +78,7 @@ TEST(FanQuadrature, RandomPolygonsGiveTheReferencePointsBitForBit) {
     EXPECT_EQ(largest, ConvexPolygon::kCapacity);  // every fan length up to the capacity was drawn
     EXPECT_GT(outside, lanes / 10);
     EXPECT_GT(inside, lanes / 10);
-  }
+  });
 }
 
 // Over a square that holds the circle, the shape's integral is 2 pi a^3 / 3 (the Hertz pressure's volume over its

@@ -6,9 +6,6 @@
 // order.
 #include <gtest/gtest.h>
 
-#include <cstring>
-
-#include "hwy/targets.h"
 #include "pkg/geom/DeepContactCriterion.hpp"
 #include "pkg/geom/TriangleSphereGeom.hpp"
 #include "tests/support/HighwayTargets.hpp"
@@ -17,17 +14,10 @@
 namespace roundedmesh {
 namespace {
 
-template <class T>
-bool sameBits(const T& a, const T& b) {
-  return std::memcmp(&a, &b, sizeof(T)) == 0;
-}
+using test::sameBits;
 
 TEST(PolygonContacts, EveryLaneIsTheScalarPathsBitForBit) {
-  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
-  ASSERT_FALSE(targets.empty());
-  for (const int64_t target : targets) {
-    const test::TargetForTest chosen(target);
-    SCOPED_TRACE(hwy::TargetName(target));
+  test::forEachInstructionSet([&](int64_t) {
     long contacts = 0, empty = 0, beyond = 0, notClear = 0;
     test::forEachLibraryLane(4417, 400, [&](const test::LibraryLane& lane) {
       if (::testing::Test::HasFatalFailure() || !lane.planes.result(lane.k) || lane.clips.overflowed(lane.k)) return;
@@ -69,7 +59,7 @@ TEST(PolygonContacts, EveryLaneIsTheScalarPathsBitForBit) {
     EXPECT_GT(empty, 10000);
     EXPECT_GT(beyond, 2000);
     EXPECT_GT(notClear, 10);
-  }
+  });
 }
 
 }  // namespace

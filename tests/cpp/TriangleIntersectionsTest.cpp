@@ -8,9 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 
-#include "hwy/targets.h"
 #include "pkg/math/TriangleIntersections.hpp"
 #include "tests/support/HighwayTargets.hpp"
 #include "tests/support/RandomPairs.hpp"
@@ -18,7 +16,7 @@
 namespace roundedmesh {
 namespace {
 
-bool sameBits(const Vector2r& a, const Vector2r& b) { return std::memcmp(a.data(), b.data(), sizeof(Vector2r)) == 0; }
+using test::sameBits;
 
 struct TrianglePairInPlane {
   ConvexPolygon p, q;
@@ -48,11 +46,7 @@ TrianglePairInPlane randomPair(test::RandomSource& random) {
 }
 
 TEST(TriangleIntersections, EveryLaneIsConvexPolygonsBitForBit) {
-  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
-  ASSERT_FALSE(targets.empty());
-  for (const int64_t target : targets) {
-    const test::TargetForTest chosen(target);
-    SCOPED_TRACE(hwy::TargetName(target));
+  test::forEachInstructionSet([&](int64_t) {
     test::RandomSource random(5821);
     long lanes = 0, empty = 0, clipped = 0, overflowed = 0;
     TriangleIntersections batch;
@@ -86,7 +80,7 @@ TEST(TriangleIntersections, EveryLaneIsConvexPolygonsBitForBit) {
     EXPECT_GT(empty, 10000);
     EXPECT_GT(clipped, 50000);
     EXPECT_LT(overflowed, 1e-3 * lanes);
-  }
+  });
 }
 
 }  // namespace

@@ -8,10 +8,8 @@
 // in its order.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <string>
 
-#include "hwy/targets.h"
 #include "pkg/geom/TrianglePlanes.hpp"
 #include "pkg/geom/TriangleSphereGeom.hpp"
 #include "tests/support/HighwayTargets.hpp"
@@ -20,10 +18,7 @@
 namespace roundedmesh {
 namespace {
 
-template <class T>
-bool sameBits(const T& a, const T& b) {
-  return std::memcmp(&a, &b, sizeof(T)) == 0;
-}
+using test::sameBits;
 
 struct Tally {
   long lanes = 0, passed = 0;
@@ -59,11 +54,7 @@ void checkLane(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3
 }
 
 TEST(TrianglePlanes, EveryLaneIsTrianglePlanesBitForBit) {
-  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
-  ASSERT_FALSE(targets.empty());
-  for (const int64_t target : targets) {
-    const test::TargetForTest chosen(target);
-    SCOPED_TRACE(hwy::TargetName(target));
+  test::forEachInstructionSet([&](int64_t) {
     Tally tally;
     test::forEachLibraryLane(739, 150, [&](const test::LibraryLane& lane) {
       if (HasFatalFailure()) return;
@@ -109,7 +100,7 @@ TEST(TrianglePlanes, EveryLaneIsTrianglePlanesBitForBit) {
     EXPECT_GT(tally.rejected[static_cast<int>(Rejection::NotFacing)], 1000);
     EXPECT_GT(tally.rejected[static_cast<int>(Rejection::NoOverlap)], 20000);
     EXPECT_GT(tally.rejected[static_cast<int>(Rejection::OutsideCircle)], 20000);
-  }
+  });
 }
 
 }  // namespace

@@ -1,0 +1,165 @@
+// The damping and the node forces in lanes (DampedLoads.hpp) are dampedLoad's and nodeForces' bit for bit, on every
+// instruction set the processor has and the build compiled:
+//   - the triangle contacts of random body pairs of the library (grazing to deep, moving at up to 1 m/s and 10 rad/s),
+//     their elastic loads in batches of 1 to 16, for the paper's circles and the principal curvatures' ellipses, the
+//     quadrature and exact regimes, and a damping A from none to large enough that separating contacts lose all
+//     pressure (Eq. 7's factor clamped at zero);
+//   - made-up loads at the edges: zero and negative forces, NaN and infinite ones, a triangle edge-on (no area), a
+//     centre of pressure outside the triangle (a weight clamped at zero);
+// and the engine's pair load gives each contact that load and those node forces (pairLoad's listing). No tolerance:
+// the lanes run the reference's operations in its order.
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "hwy/targets.h"
+#include "pkg/engine/PairGeometry.hpp"
+#include "pkg/engine/PairLoad.hpp"
+#include "pkg/law/DampedLoads.hpp"
+#include "pkg/law/NodeForces.hpp"
+#include "pkg/law/PairLaw.hpp"
+#include "tests/support/HighwayTargets.hpp"
+#include "tests/support/RandomPairs.hpp"
+
+namespace roundedmesh {
+namespace {
+
+using test::sameBits;
+
+struct Tally {
+  long lanes = 0, clamped = 0, unloaded = 0, edgeOn = 0, weightClamped = 0;
+};
+
+// Each lane of `batch` (filled from `elastic` and `geoms`) against dampedLoad and nodeForces.
+void checkBatch(const std::vector<NormalLoad>& elastic, const std::vector<PressureGeom>& geoms, const HertzPhys& phys,
+                const std::string& where, Tally& tally) {
+  DampedLoads batch;
+  batch.damping = phys.damping;
+  const int count = static_cast<int>(geoms.size());
+  for (int first = 0, size = 1; first < count; first += size, size = size % DampedLoads::kCapacity + 1) {
+    batch.size = std::min(size, count - first);
+    for (int k = 0; k < batch.size; ++k) batch.set(k, elastic[first + k], geoms[first + k]);
+    dampLoads(batch);
+    for (int k = 0; k < batch.size; ++k) {
+      const std::string at = where + ", contact " + std::to_string(first + k);
+      const NormalLoad expected = dampedLoad(elastic[first + k], geoms[first + k], phys);
+      const NormalLoad lanes = batch.load(k);
+      ASSERT_TRUE(sameBits(lanes.force, expected.force)) << at << ": " << lanes.force << " " << expected.force;
+      ASSERT_TRUE(sameBits(lanes.moment, expected.moment)) << at;
+      ASSERT_EQ(lanes.regime, expected.regime) << at;
+      ASSERT_TRUE(sameBits(lanes.elasticForce, expected.elasticForce)) << at;
+      ASSERT_TRUE(sameBits(lanes.elasticMoment, expected.elasticMoment)) << at;
+      ASSERT_TRUE(sameBits(lanes.overlapRate, expected.overlapRate)) << at;
+      ASSERT_TRUE(sameBits(lanes.elasticEnergy, expected.elasticEnergy)) << at;
+      const std::array<Real, 3> forces = nodeForces(geoms[first + k].nodes, expected);
+      ASSERT_TRUE(sameBits(batch.nodeForces(k), forces)) << at;
+      ++tally.lanes;
+      tally.clamped += expected.elasticForce > 0 && expected.force == 0;
+      tally.unloaded += expected.force == 0 || !std::isfinite(expected.force);
+    }
+  }
+}
+
+TEST(DampedLoads, EveryLaneOfLibraryContactsIsTheReferenceBitForBit) {
+  test::forEachInstructionSet([&](int64_t target) {
+    test::RandomSource random(3511);
+    test::BodyLibrary library(HertzMaterial{1e6, 0.4, 2000, 1e-3, 0.5, 20});
+    Tally tally;
+    long exact = 0, elliptical = 0;
+    for (int bodyPair = 0; bodyPair < 400 && !::testing::Test::HasFatalFailure(); ++bodyPair) {
+      test::BodyPairCase c = test::randomBodyPair(random, library);
+      PressureOptions& options = c.model.options.pressure;
+      options.regime = bodyPair % 3 == 2 ? RegimeChoice::Exact : RegimeChoice::Auto;
+      options.curvature = bodyPair % 4 == 3 ? CurvatureModel::Principal : CurvatureModel::Mean;
+      std::vector<PressureGeom> geoms;
+      ContactStatistics statistics;
+      pairGeometry(c.model, c.data, {0, 1}, geoms, statistics);
+      HertzPhys phys = PairLaw(c.model.bodies[0].material, c.model.bodies[1].material, options,
+                               c.model.options.friction).phys;
+      // A from none to 10 s: at 1 m/s the largest makes any separating contact shallower than 10 m lose its pressure.
+      phys.damping = bodyPair % 5 == 0 ? 0 : std::exp(random.uniform(std::log(1e-6), std::log(10.0)));
+      std::vector<NormalLoad> elastic;
+      for (const PressureGeom& geom : geoms) {
+        elastic.push_back(elasticLoad(geom, phys, options));
+        exact += elastic.back().regime == Regime::Exact;
+        elliptical += geom.elliptical;
+      }
+      checkBatch(elastic, geoms, phys, "body pair " + std::to_string(bodyPair), tally);
+    }
+    EXPECT_GT(tally.lanes, 3000);
+    EXPECT_GT(tally.clamped, 100);
+    EXPECT_GT(exact, 500);
+    EXPECT_GT(elliptical, 300);
+    std::cout << hwy::TargetName(target) << ": " << tally.lanes << " contacts, " << exact << " exact, " << elliptical
+              << " elliptical, " << tally.clamped << " whose damping took all pressure\n";
+  });
+}
+
+TEST(DampedLoads, EveryLaneOfLoadsAtTheEdgesIsTheReferenceBitForBit) {
+  const Real nan = std::numeric_limits<Real>::quiet_NaN(), inf = std::numeric_limits<Real>::infinity();
+  const std::vector<Real> forces = {0.0, -0.0, 1.5, -2.0, nan, inf, -inf, 1e-300, 3e300};
+  test::forEachInstructionSet([&](int64_t) {
+    test::RandomSource random(77);
+    std::vector<PressureGeom> geoms;
+    std::vector<NormalLoad> elastic;
+    Tally tally;
+    for (int trial = 0; trial < 2000; ++trial) {
+      PressureGeom geom;
+      for (Vector2r& node : geom.nodes) node = Vector2r(random.uniform(-1, 1), random.uniform(-1, 1));
+      if (trial % 7 == 0) geom.nodes = {geom.nodes[0], geom.nodes[0], geom.nodes[0]};  // edge-on: no area
+      geom.overlapRate = random.uniform(-2, 2);
+      geom.overlapRateSlope = Vector2r(random.uniform(-5, 5), random.uniform(-5, 5));
+      geom.sphereOverlap = std::exp(random.uniform(std::log(1e-9), std::log(1e-2)));
+      const Real force = trial % 3 == 0 ? forces[trial / 3 % forces.size()] : random.uniform(0, 10);
+      // A centre of pressure anywhere within twice the triangles' reach: outside the triangle some of the time.
+      const Vector2r centre(random.uniform(-2, 2), random.uniform(-2, 2));
+      elastic.push_back({force, force * Vector2r(centre.y(), -centre.x()), Regime::Quadrature});
+      geoms.push_back(geom);
+      const Real twiceArea = cross2(geom.nodes[1] - geom.nodes[0], geom.nodes[2] - geom.nodes[0]);
+      tally.edgeOn += twiceArea == 0;
+      tally.weightClamped += twiceArea != 0 && !ConvexPolygon::triangle(geom.nodes[0], geom.nodes[1], geom.nodes[2])
+                                                  .contains(centre);
+    }
+    const HertzPhys phys{1e6, 1e-3};
+    checkBatch(elastic, geoms, phys, "made-up loads", tally);
+    EXPECT_EQ(tally.lanes, 2000);
+    EXPECT_GT(tally.unloaded, 300);
+    EXPECT_GT(tally.edgeOn, 200);
+    EXPECT_GT(tally.weightClamped, 1000);
+  });
+}
+
+// The engine's wiring: pairLoad lists each contact with Law2's load and Eq. 15's node forces, on the processor's own
+// instruction set.
+TEST(DampedLoads, PairLoadGivesEachContactLaw2sLoadAndNodeForces) {
+  test::RandomSource random(902);
+  test::BodyLibrary library(HertzMaterial{1e6, 0.4, 2000, 1e-3, 0.5, 20});
+  long contacts = 0;
+  for (int bodyPair = 0; bodyPair < 150; ++bodyPair) {
+    test::BodyPairCase c = test::randomBodyPair(random, library);
+    std::vector<PressureGeom> geoms;
+    ContactStatistics statistics;
+    pairGeometry(c.model, c.data, {0, 1}, geoms, statistics);
+    std::vector<TriangleContact> listed;
+    pairLoad(c.model, c.data, {0, 1}, geoms, &listed);
+    ASSERT_EQ(listed.size(), geoms.size());
+    const PairLaw law(c.model.bodies[0].material, c.model.bodies[1].material, c.model.options.pressure,
+                      c.model.options.friction);
+    for (size_t k = 0; k < geoms.size(); ++k) {
+      const NormalLoad expected = Law2_PressureGeom_HertzPhys_IntegratedPressure(geoms[k], law.phys, law.pressure);
+      const std::string at = "body pair " + std::to_string(bodyPair) + ", contact " + std::to_string(k);
+      ASSERT_TRUE(sameBits(listed[k].load.force, expected.force)) << at;
+      ASSERT_TRUE(sameBits(listed[k].load.moment, expected.moment)) << at;
+      ASSERT_TRUE(sameBits(listed[k].load.overlapRate, expected.overlapRate)) << at;
+      ASSERT_TRUE(sameBits(listed[k].nodeForces, nodeForces(geoms[k].nodes, expected))) << at;
+      ++contacts;
+    }
+  }
+  EXPECT_GT(contacts, 1000);
+}
+
+}  // namespace
+}  // namespace roundedmesh
