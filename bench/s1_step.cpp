@@ -14,6 +14,8 @@
 //                              near searches, narrow phase, law, core) per step, and the near pairs scanned
 //   BM_S1NarrowPhase           Ig2 over every pair's candidates of the settled packing (time per contact)
 //   BM_S1Load/friction         Law2, node forces and friction over its triangle contacts (time per contact)
+//   BM_S1NearSearch/motion     the near searches in the triangle trees of every body pair's list, the settled
+//                              packing (0) or a step of the landing window (3) (time per search)
 // Counters per step: body pairs, candidates, contacts, candidates per contact, list rebuilds, stage times.
 //   build/bench/roundedmesh_s1_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // The thread counts of the first BM_S1Step series are 1 and 2, or those listed in ROUNDEDMESH_BENCH_THREADS
@@ -27,6 +29,8 @@
 #include "bench/RecordedScene.hpp"
 #include "bench/ThreadCounts.hpp"
 #include "pkg/bound/BatchedCandidates.hpp"
+#include "pkg/bound/TrianglePairCandidates.hpp"
+#include "pkg/engine/CandidateLists.hpp"
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/PairLoad.hpp"
 #include "pkg/engine/ContactStep.hpp"
@@ -192,6 +196,43 @@ void BM_S1Load(benchmark::State& state) {
   state.counters["contacts"] = static_cast<double>(step.contacts);
 }
 BENCHMARK(BM_S1Load)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+// The near searches (nearTrianglePairs) of every body pair's list after one step of the settled packing (0) or of
+// the landing window's step 10 (3), each at the pose, skin and depth its near list was built with.
+void BM_S1NearSearch(benchmark::State& state) {
+  const ContactModel& model = scene().model;
+  ContactData data;
+  if (state.range(0) == 0)
+    scene().setStates(data);
+  else
+    scene().setStates(data, scene().landing, 10);
+  contactForces(model, data);
+  const int bodyCount = static_cast<int>(model.bodies.size());
+  std::vector<size_t> searched;
+  long nearPairs = 0;
+  for (size_t n = 0; n < data.neighbours.size(); ++n)
+    if (data.candidateLists[n].nearSkin > 0 && data.neighbours[n].other < bodyCount) {
+      searched.push_back(n);
+      nearPairs += static_cast<long>(data.candidateLists[n].near.size());
+    }
+  std::vector<TrianglePair> near;
+  for (auto _ : state)
+    for (const size_t n : searched) {
+      const BodyPair& pair = data.neighbours[n];
+      const CandidateList& list = data.candidateLists[n];
+      const RoundedBody &body = model.bodies[pair.body], &other = model.bodies[pair.other];
+      const Real shallow = kDeepestOverlap * std::min(body.equivalentRadius, other.equivalentRadius);
+      nearTrianglePairs(*body.mesh, *other.mesh, list.nearRotation.toRotationMatrix(), list.nearTranslation,
+                        list.nearSkin, list.nearDepth, shallow, near);
+      benchmark::DoNotOptimize(near.data());
+    }
+  state.counters["us_per_search"] =
+      benchmark::Counter(static_cast<double>(searched.size()) * 1e-6,
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["searches"] = static_cast<double>(searched.size());
+  state.counters["near_pairs"] = static_cast<double>(nearPairs);
+}
+BENCHMARK(BM_S1NearSearch)->Arg(0)->Arg(3)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace roundedmesh

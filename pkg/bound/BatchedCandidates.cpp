@@ -121,32 +121,39 @@ V Separation(const V ax[3], const V ay[3], const V bx[3], const V by[3]) {
   return gap;
 }
 
+// Which filters a pass applies: 2-4 (a near search's, canTouch without `full`: the trees' search has applied 1); the
+// cheap first pass of a scan, 1-4 and filter 5's first test, the projected circumcircles, for the tests' failures
+// only; or all of 1-5 and both sides of every test.
+enum class Filters { TwoToFour, FirstPass, Whole };
+
 // Filters 1-5 of touchablePair (TrianglePairCandidates.cpp, canTouch) for the pairs (s, t), in the reference's
-// formulas. With kWhole, all of filter 5 and both sides of every test; without, only the tests' failures and
-// filter 5's first test, the projected circumcircles, which the cheap first pass uses.
-template <bool kWhole>
+// formulas, as many as kFilters says.
+template <Filters kFilters>
 HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k, VI s, VI t) {
+  constexpr bool kWhole = kFilters == Filters::Whole;
   const D d;
   const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), half = hn::Set(d, 0.5);
   const V margin = k.margin;
   Verdict filters1to4{hn::FirstN(d, 0), hn::FirstN(d, hn::Lanes(d))};
-  // Filter 1: triangle t's cap box moved into body 1's frame, grown by the reach, against s's.
-  V min2[3], max2[3], min1[3], max1[3], centre2[3], size2[3], centre[3], extent[3];
-  Gather3(D(), q.mesh2->boxMin, t, min2);
-  Gather3(D(), q.mesh2->boxMax, t, max2);
-  Gather3(D(), q.mesh1->boxMin, s, min1);
-  Gather3(D(), q.mesh1->boxMax, s, max1);
-  for (int i = 0; i < 3; ++i) {
-    centre2[i] = half * (min2[i] + max2[i]);
-    size2[i] = half * (max2[i] - min2[i]);
-  }
-  Rotate3(k.R, centre2, centre);
-  Rotate3(k.absR, size2, extent);
-  for (int i = 0; i < 3; ++i) {
-    centre[i] = centre[i] + k.T[i];
-    extent[i] = extent[i] + k.reach;
-    filters1to4.check(min1[i], centre[i] + extent[i], margin);
-    filters1to4.check(centre[i] - extent[i], max1[i], margin);
+  if constexpr (kFilters != Filters::TwoToFour) {
+    // Filter 1: triangle t's cap box moved into body 1's frame, grown by the reach, against s's.
+    V min2[3], max2[3], min1[3], max1[3], centre2[3], size2[3], centre[3], extent[3];
+    Gather3(D(), q.mesh2->boxMin, t, min2);
+    Gather3(D(), q.mesh2->boxMax, t, max2);
+    Gather3(D(), q.mesh1->boxMin, s, min1);
+    Gather3(D(), q.mesh1->boxMax, s, max1);
+    for (int i = 0; i < 3; ++i) {
+      centre2[i] = half * (min2[i] + max2[i]);
+      size2[i] = half * (max2[i] - min2[i]);
+    }
+    Rotate3(k.R, centre2, centre);
+    Rotate3(k.absR, size2, extent);
+    for (int i = 0; i < 3; ++i) {
+      centre[i] = centre[i] + k.T[i];
+      extent[i] = extent[i] + k.reach;
+      filters1to4.check(min1[i], centre[i] + extent[i], margin);
+      filters1to4.check(centre[i] - extent[i], max1[i], margin);
+    }
   }
   // Filter 2: the circumscribed balls.
   V pc[3], qc0[3], qc[3], offset[3];
@@ -184,6 +191,7 @@ HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k,
   Rotate3(k.R, qn0, qn);
   filters1to4.check(zero, Dot3(pn, sphereOffset) + moved, margin);
   filters1to4.check(Dot3(qn, sphereOffset), moved + k.turn * (distance + moved), margin);
+  if constexpr (kFilters == Filters::TwoToFour) return filters1to4;
   // Filter 5 (the contact circle, whose centre c and radius a_max can move with the motion) holds for pairs whose
   // centres stay apart within it; it is decided here only where they stay clearly apart (resolution): the circle's
   // slack grows without bound as they meet.
@@ -279,7 +287,7 @@ size_t KeptNearPairs(const batched::NearScan& q, int64_t* kept) {
   size_t keptCount = 0;
   size_t i = 0;
   for (; i + lanes <= q.count; i += lanes) {
-    const Verdict verdict = TestPairs<false>(q, k, hn::LoadU(di, q.s + i), hn::LoadU(di, q.t + i));
+    const Verdict verdict = TestPairs<Filters::FirstPass>(q, k, hn::LoadU(di, q.s + i), hn::LoadU(di, q.t + i));
     const auto index = hn::Iota(di, static_cast<int64_t>(i));
     keptCount += hn::CompressStore(index, hn::RebindMask(di, hn::Not(verdict.fails)), di, kept + keptCount);
   }
@@ -287,9 +295,10 @@ size_t KeptNearPairs(const batched::NearScan& q, int64_t* kept) {
   return keptCount;
 }
 
-// The second pass, over the first's `kept` pairs: `decision` per pair, 1 if it passes every filter, 0 if it fails
-// one, -1 if the rounding could tell either way (for the reference's own test).
-void DecidedNearPairs(const batched::NearScan& q, const int64_t* kept, size_t count, int64_t* decision) {
+// Over the scan's pairs at positions `kept`: `decision` per pair, 1 if it passes kFilters, 0 if it fails one, -1 if the
+// rounding could tell either way (for the reference's own test).
+template <Filters kFilters>
+void Decided(const batched::NearScan& q, const int64_t* kept, size_t count, int64_t* decision) {
   const D d;
   const DI di;
   const size_t lanes = hn::Lanes(d);
@@ -303,7 +312,7 @@ void DecidedNearPairs(const batched::NearScan& q, const int64_t* kept, size_t co
       index = tail;
     }
     const VI which = hn::LoadU(di, index);
-    const Verdict verdict = TestPairs<true>(q, k, hn::GatherIndex(di, q.s, which), hn::GatherIndex(di, q.t, which));
+    const Verdict verdict = TestPairs<kFilters>(q, k, hn::GatherIndex(di, q.s, which), hn::GatherIndex(di, q.t, which));
     const VI outcome = hn::IfThenElse(hn::RebindMask(di, verdict.passes), hn::Set(di, 1),
                                       hn::IfThenElse(hn::RebindMask(di, verdict.fails), hn::Zero(di), hn::Set(di, -1)));
     if (n == lanes) {
@@ -313,6 +322,16 @@ void DecidedNearPairs(const batched::NearScan& q, const int64_t* kept, size_t co
       std::copy(tailDecision, tailDecision + n, decision + i);
     }
   }
+}
+
+// The second pass of a scan, over the first's `kept` pairs: every filter.
+void DecidedNearPairs(const batched::NearScan& q, const int64_t* kept, size_t count, int64_t* decision) {
+  Decided<Filters::Whole>(q, kept, count, decision);
+}
+
+// A near search's filters 2-4, over the pairs at positions `kept`.
+void DecidedFilters2to4(const batched::NearScan& q, const int64_t* kept, size_t count, int64_t* decision) {
+  Decided<Filters::TwoToFour>(q, kept, count, decision);
 }
 
 const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
@@ -329,6 +348,7 @@ namespace roundedmesh {
 
 HWY_EXPORT(KeptNearPairs);
 HWY_EXPORT(DecidedNearPairs);
+HWY_EXPORT(DecidedFilters2to4);
 HWY_EXPORT(TargetName);
 
 // The margin: every quantity the passes compare is a sum of products of lengths no larger than the bodies' bounds,
@@ -340,20 +360,12 @@ HWY_EXPORT(TargetName);
 // 1e-6 L of each other (its slack grows as 1 / distance^2 there) and a projected triangle with an edge shorter than
 // 1e-6 of the corners' distance from c, or whose doubled area is below 1e-6 of its edges squared (the direction of
 // that edge, or the side of the origin, could be the rounding's).
-size_t touchableTrianglePairsBatched(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
-                                   const Vector3r& translation, Real skin, Real depth,
-                                   const std::vector<TrianglePair>& near, std::vector<TrianglePair>& pairs) {
-  pairs.clear();
-  thread_local std::vector<int64_t> s, t, kept, decision;
-  const size_t count = near.size();
-  s.resize(count);
-  t.resize(count);
-  kept.resize(count);
-  decision.resize(count);
-  for (size_t k = 0; k < count; ++k) {
-    s[k] = near[k][0];
-    t[k] = near[k][1];
-  }
+namespace {
+
+// A scan of the pairs (s[k], t[k]) for this pose, skin and reach (depth + skin).
+batched::NearScan scanOf(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                         const Vector3r& translation, Real skin, Real reach, const std::vector<int64_t>& s,
+                         const std::vector<int64_t>& t) {
   batched::NearScan scan;
   scan.mesh1 = &mesh1.columns();
   scan.mesh2 = &mesh2.columns();
@@ -366,7 +378,7 @@ size_t touchableTrianglePairsBatched(const RoundedMesh& mesh1, const RoundedMesh
     }
   }
   scan.skin = skin;
-  scan.reach = depth + skin;
+  scan.reach = reach;
   scan.bound2 = mesh2.sphereBoundRadius();
   scan.turn = skin / scan.bound2;
   const Real scale = mesh1.sphereBoundRadius() + mesh2.sphereBoundRadius() + translation.norm() +
@@ -375,9 +387,34 @@ size_t touchableTrianglePairsBatched(const RoundedMesh& mesh1, const RoundedMesh
   scan.resolution = 1e-6 * scale;
   scan.s = s.data();
   scan.t = t.data();
-  scan.count = count;
+  scan.count = s.size();
+  return scan;
+}
+
+// The pairs' two index columns.
+void splitPairs(const std::vector<TrianglePair>& pairs, std::vector<int64_t>& s, std::vector<int64_t>& t) {
+  s.resize(pairs.size());
+  t.resize(pairs.size());
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    s[k] = pairs[k][0];
+    t[k] = pairs[k][1];
+  }
+}
+
+}  // namespace
+
+size_t touchableTrianglePairsBatched(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                                   const Vector3r& translation, Real skin, Real depth,
+                                   const std::vector<TrianglePair>& near, std::vector<TrianglePair>& pairs) {
+  pairs.clear();
+  thread_local std::vector<int64_t> s, t, kept, decision;
+  splitPairs(near, s, t);
+  kept.resize(near.size());
+  decision.resize(near.size());
+  const batched::NearScan scan = scanOf(mesh1, mesh2, rotation, translation, skin, depth + skin, s, t);
   const size_t keptCount = HWY_DYNAMIC_DISPATCH(KeptNearPairs)(scan, kept.data());
   HWY_DYNAMIC_DISPATCH(DecidedNearPairs)(scan, kept.data(), keptCount, decision.data());
+  const Matrix3r absRotation = rotation.cwiseAbs();
   size_t undecided = 0;
   for (size_t k = 0; k < keptCount; ++k) {
     const TrianglePair& st = near[kept[k]];
@@ -386,6 +423,28 @@ size_t touchableTrianglePairsBatched(const RoundedMesh& mesh1, const RoundedMesh
         (decision[k] == -1 && touchablePair(mesh1, st[0], mesh2, st[1], rotation, absRotation, translation, skin, depth)))
       pairs.push_back(st);
   }
+  return undecided;
+}
+
+size_t keepPassingFilters2to4Batched(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                                     const Vector3r& translation, Real skin, Real reach,
+                                     std::vector<TrianglePair>& pairs) {
+  thread_local std::vector<int64_t> s, t, every, decision;
+  splitPairs(pairs, s, t);
+  every.resize(pairs.size());
+  for (size_t k = 0; k < pairs.size(); ++k) every[k] = static_cast<int64_t>(k);
+  decision.resize(pairs.size());
+  const batched::NearScan scan = scanOf(mesh1, mesh2, rotation, translation, skin, reach, s, t);
+  HWY_DYNAMIC_DISPATCH(DecidedFilters2to4)(scan, every.data(), pairs.size(), decision.data());
+  size_t undecided = 0, kept = 0;
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const TrianglePair st = pairs[k];
+    if (decision[k] == -1) ++undecided;
+    if (decision[k] == 1 ||
+        (decision[k] == -1 && passesFilters2to4(mesh1, st[0], mesh2, st[1], rotation, translation, skin, reach)))
+      pairs[kept++] = st;
+  }
+  pairs.resize(kept);
   return undecided;
 }
 

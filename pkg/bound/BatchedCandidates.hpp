@@ -22,6 +22,12 @@ size_t touchableTrianglePairsBatched(const RoundedMesh& mesh1, const RoundedMesh
                                    const Vector3r& translation, Real skin, Real depth,
                                    const std::vector<TrianglePair>& near, std::vector<TrianglePair>& pairs);
 
+// The near search's filters 2-4 (passesFilters2to4) on `pairs`, batched: keeps those that pass, in their order.
+// `reach`: depth + skin [m]. Returns how many pairs the reference's own test decided.
+size_t keepPassingFilters2to4Batched(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                                     const Vector3r& translation, Real skin, Real reach,
+                                     std::vector<TrianglePair>& pairs);
+
 // The name of the instruction set the batches run on here (e.g. "AVX2", "AVX3" for AVX-512), for benchmarks.
 const char* batchedTarget();
 

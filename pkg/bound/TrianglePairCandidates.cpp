@@ -116,6 +116,11 @@ bool canTouch(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, 
 
 }  // namespace
 
+bool passesFilters2to4(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& rotation,
+                       const Vector3r& translation, Real skin, Real reach) {
+  return canTouch(mesh1, s, mesh2, t, rotation, translation, skin, reach, false);
+}
+
 void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
                        const Vector3r& translation, Real skin, Real depth, Real shallow,
                        std::vector<TrianglePair>& pairs) {
@@ -126,23 +131,34 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
     return capReaches(mesh1, s, PlacedMesh{mesh2, rotation, translation}, 2 * skin) &&
            capReaches(mesh2, t, PlacedMesh{mesh1, back, backTranslation}, 2 * skin);
   };
+  // The pairs of the trees within `margin` (filter 1) that pass filters 2-4, in the trees' order.
+  auto searchTrees = [&](Real margin, std::vector<TrianglePair>& found) {
+    TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, margin,
+                             [&found](int s, int t) { found.push_back({s, t}); });
+    keepPassingFilters2to4Batched(mesh1, mesh2, rotation, translation, skin, depth + skin, found);
+  };
   // A list up to twice the Hertz range: every pair of the trees within depth + skin, those farther apart than
   // shallow + skin only if both caps reach the other body.
   if (depth <= 2 * shallow) {
-    TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, depth + skin, [&](int s, int t) {
-      if (!canTouch(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin, false)) return;
-      const bool onlyDeep = depth > shallow && !mesh1.tree().triangleBox(s).intersects(
-                                                   transformedBox(mesh2.tree().triangleBox(t), rotation, translation, shallow + skin));
+    if (depth <= shallow) {
+      searchTrees(depth + skin, pairs);
+      return;
+    }
+    thread_local std::vector<TrianglePair> found;
+    found.clear();
+    searchTrees(depth + skin, found);
+    const AlignedBox3r* boxes1 = mesh1.tree().triangleBoxes().data();
+    for (const auto& [s, t] : found) {
+      const bool onlyDeep = !boxes1[s].intersects(
+          transformedBox(mesh2.tree().triangleBox(t), rotation, translation, shallow + skin));
       if (!onlyDeep || bothReach(s, t)) pairs.push_back({s, t});
-    });
+    }
     return;
   }
   // Deeper (a pair past the Hertz range holds a list as deep as the bodies: pkg/engine/CandidateLists.hpp), the same pairs
   // without searching every pair of the trees within that depth: those within shallow + skin from the trees, the
   // others among the few triangles whose caps reach the other body (the ones in or at it).
-  TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, shallow + skin, [&](int s, int t) {
-    if (canTouch(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin, false)) pairs.push_back({s, t});
-  });
+  searchTrees(shallow + skin, pairs);
   std::vector<int> reaching1, reaching2;
   for (int s = 0; s < mesh1.triangleCount(); ++s)
     if (capReaches(mesh1, s, PlacedMesh{mesh2, rotation, translation}, 2 * skin)) reaching1.push_back(s);

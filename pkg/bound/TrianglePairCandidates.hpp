@@ -51,6 +51,12 @@ void touchableTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, 
                             const Vector3r& translation, Real skin, Real depth, const std::vector<TrianglePair>& near,
                             std::vector<TrianglePair>& pairs);
 
+// Whether triangle s of mesh 1 and t of mesh 2 pass filters 2-4 for this skin and `reach` (depth + skin): the test
+// of one pair of nearTrianglePairs after the trees' search (filter 1), the reference of
+// keepPassingFilters2to4Batched (BatchedCandidates.hpp), which the search uses.
+bool passesFilters2to4(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& rotation,
+                       const Vector3r& translation, Real skin, Real reach);
+
 // Whether triangle s of mesh 1 and t of mesh 2 pass filters 1-5 for this skin and depth: the test of one pair of
 // touchableTrianglePairs (`absRotation`: |rotation|, formed once per list).
 bool touchablePair(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& rotation,

@@ -23,6 +23,7 @@ void TriangleTree::build(int self, int first, int count) {
   AlignedBox3r box;
   for (int i = first; i < first + count; ++i) box.extend(boxes_[order_[i]]);
   nodes_[self].box = box;
+  nodes_[self].sizeSq = box.sizes().squaredNorm();
   if (count <= kLeafSize) {
     nodes_[self].first = first;
     nodes_[self].count = count;

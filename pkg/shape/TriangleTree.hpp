@@ -24,6 +24,7 @@ class TriangleTree {
     AlignedBox3r box;
     int first;  // leaf: first index into order(); inner: index of the left child (the right one follows it)
     int count;  // leaf: number of triangles (> 0); inner: 0
+    Real sizeSq;  // the box's squared diagonal, which queryPairs compares to choose the node it descends [m^2]
   };
 
   TriangleTree() = default;
@@ -55,6 +56,13 @@ class TriangleTree {
   std::vector<int> order_;  // triangle indices, grouped by leaf
   std::vector<Node> nodes_;
 };
+
+// AlignedBox3r::intersects with its six comparisons joined without branches: one branch on the outcome, where the
+// traversal of a tree would mispredict several.
+inline bool meet(const AlignedBox3r& a, const AlignedBox3r& b) {
+  return (a.min().x() <= b.max().x()) & (a.min().y() <= b.max().y()) & (a.min().z() <= b.max().z()) &
+         (b.min().x() <= a.max().x()) & (b.min().y() <= a.max().y()) & (b.min().z() <= a.max().z());
+}
 
 // The axis-aligned box of `box` rotated and translated: centre R c + t, half-sizes |R| h, grown by margin.
 inline AlignedBox3r transformedBox(const AlignedBox3r& box, const Matrix3r& rotation, const Vector3r& translation,
@@ -106,11 +114,12 @@ void TriangleTree::queryPairs(const TriangleTree& a, const TriangleTree& b, cons
     for (Placed* placed : {&placedNodes, &placedTriangles}) std::fill(placed->stamps.begin(), placed->stamps.end(), 0u);
     stamp = 1;
   }
-  auto place = [&](Placed& placed, size_t count, int index, const AlignedBox3r& box) -> const AlignedBox3r& {
-    if (placed.stamps.size() < count) {
-      placed.stamps.resize(count, 0u);
-      placed.boxes.resize(count);
+  for (auto [placed, count] : {std::pair(&placedNodes, b.nodes_.size()), std::pair(&placedTriangles, b.boxes_.size())})
+    if (placed->stamps.size() < count) {
+      placed->stamps.resize(count, 0u);
+      placed->boxes.resize(count);
     }
+  auto place = [&](Placed& placed, int index, const AlignedBox3r& box) -> const AlignedBox3r& {
     if (placed.stamps[index] != stamp) {
       placed.boxes[index] = moved(box);
       placed.stamps[index] = stamp;
@@ -124,15 +133,15 @@ void TriangleTree::queryPairs(const TriangleTree& a, const TriangleTree& b, cons
     const auto [i, j] = stack[--top];
     const Node& na = a.nodes_[i];
     const Node& nb = b.nodes_[j];
-    if (!na.box.intersects(place(placedNodes, b.nodes_.size(), j, nb.box))) continue;
+    if (!meet(na.box, place(placedNodes, j, nb.box))) continue;
     if (na.count > 0 && nb.count > 0) {
       for (int q = nb.first; q < nb.first + nb.count; ++q) {
         const int t = b.order_[q];
-        const AlignedBox3r& triangleB = place(placedTriangles, b.boxes_.size(), t, b.boxes_[t]);
+        const AlignedBox3r& triangleB = place(placedTriangles, t, b.boxes_[t]);
         for (int p = na.first; p < na.first + na.count; ++p)
-          if (a.boxes_[a.order_[p]].intersects(triangleB)) visit(a.order_[p], t);
+          if (meet(a.boxes_[a.order_[p]], triangleB)) visit(a.order_[p], t);
       }
-    } else if (nb.count > 0 || (na.count == 0 && na.box.sizes().squaredNorm() >= nb.box.sizes().squaredNorm())) {
+    } else if (nb.count > 0 || (na.count == 0 && na.sizeSq >= nb.sizeSq)) {
       // Descend the larger of two inner nodes, or the only inner one.
       stack[top++] = {na.first, j};
       stack[top++] = {na.first + 1, j};

@@ -2,12 +2,15 @@
 // in the same order: for 10^5 random triangle pairs of every kind of the robustness suite (general, coplanar, edge on
 // edge), each filling whole vectors and a tail; for the near lists of random body pairs of the library (icospheres,
 // a distorted icosphere, a spheroid, 1 mm to 1 m), at the pose the near list was built at and moved within its skin;
-// and (RecordedSceneTest) for every list of S1's recorded shaking. No tolerance: the batches decide a pair only by a
+// and (RecordedSceneTest) for every list of S1's recorded shaking. The near search's filters 2-4 (passesFilters2to4),
+// batched, keep what the reference keeps, on the same random triangle pairs and on the pairs of the library's body
+// pairs' trees, on every instruction set the processor has and the build compiled. No tolerance: the batches decide a pair only by a
 // margin, and the pairs within it go to the reference's own test; that these are few is checked too, or the batches
 // would only be a detour to the reference.
 #include <gtest/gtest.h>
 
 #include "pkg/bound/BatchedCandidates.hpp"
+#include "tests/support/HighwayTargets.hpp"
 #include "tests/support/RandomPairs.hpp"
 
 namespace roundedmesh {
@@ -85,6 +88,73 @@ TEST(BatchedCandidates, RandomBodyPairsGiveTheReferenceLists) {
   // triangle pairs above are not counted: their radii reach 10^6 times their size, so that the margin, 1e-9 of the
   // largest radius, is as large as the triangles.
   EXPECT_LT(undecided, 1e-3 * scanned);
+}
+
+// passesFilters2to4 on each pair, one at a time.
+Pairs passingFilters2to4(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                         const Vector3r& translation, Real skin, Real reach, const Pairs& pairs) {
+  Pairs kept;
+  for (const auto& [s, t] : pairs)
+    if (passesFilters2to4(mesh1, s, mesh2, t, rotation, translation, skin, reach)) kept.push_back({s, t});
+  return kept;
+}
+
+TEST(BatchedCandidates, NearFiltersOfRandomTrianglePairsAreTheReferences) {
+  test::forEachInstructionSet([&](int64_t) {
+    test::RandomSource random(20261206);
+    const Pairs copies(2 * 8 + 3, TrianglePair{0, 0});
+    long kept = 0, rejected = 0;
+    for (long trial = 0; trial < 20000; ++trial) {
+      const test::TrianglePair pair = test::randomTrianglePair(random, test::pairKind(trial));
+      Matrix3r rotation = Matrix3r::Identity();
+      Vector3r translation = Vector3r::Zero();
+      if (trial % 2) {
+        rotation = randomTurn(random, 0.1);
+        translation = random.uniform(0, 0.1) * pair.size * random.direction();
+      }
+      const Real skin = pair.size * std::exp(random.uniform(std::log(1e-5), std::log(0.1)));
+      const Real reach = skin + pair.size * random.uniform(0, 0.1);
+      Pairs batched = copies;
+      keepPassingFilters2to4Batched(pair.p, pair.q, rotation, translation, skin, reach, batched);
+      ASSERT_EQ(batched, passingFilters2to4(pair.p, pair.q, rotation, translation, skin, reach, copies))
+          << "trial " << trial;
+      (batched.empty() ? rejected : kept) += 1;
+    }
+    EXPECT_GT(kept, 2000);
+    EXPECT_GT(rejected, 2000);
+  });
+}
+
+TEST(BatchedCandidates, NearFiltersOfBodyPairsTreesAreTheReferences) {
+  test::forEachInstructionSet([&](int64_t) {
+    test::RandomSource random(61);
+    test::BodyLibrary library(HertzMaterial{1e6, 0.4, 2000, 1e-3, 0.5, 20});
+    long inBoxes = 0, kept = 0, undecided = 0;
+    for (int bodyPair = 0; bodyPair < 300; ++bodyPair) {
+      const test::BodyPairCase c = test::randomBodyPair(random, library);
+      const RoundedMesh &mesh1 = *c.model.bodies[0].mesh, &mesh2 = *c.model.bodies[1].mesh;
+      const BodyState &s1 = c.data.bodyStates[0], &s2 = c.data.bodyStates[1];
+      const Real radius = std::min(c.model.bodies[0].equivalentRadius, c.model.bodies[1].equivalentRadius);
+      const Matrix3r rotation = (s1.orientation.conjugate() * s2.orientation).toRotationMatrix();
+      const Vector3r translation = s1.orientation.conjugate() * (s2.position - s1.position);
+      // A near list's skin (five times the engine's 0.001 to 0.01 r_eq) and a depth up to twice the Hertz range.
+      const Real skin = 5 * radius * std::exp(random.uniform(std::log(1e-3), std::log(1e-2)));
+      const Real reach = skin + 2 * kDeepestOverlap * radius * random.uniform(0, 1);
+      Pairs boxes;
+      TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, reach,
+                               [&boxes](int s, int t) { boxes.push_back({s, t}); });
+      Pairs batched = boxes;
+      undecided += static_cast<long>(
+          keepPassingFilters2to4Batched(mesh1, mesh2, rotation, translation, skin, reach, batched));
+      ASSERT_EQ(batched, passingFilters2to4(mesh1, mesh2, rotation, translation, skin, reach, boxes))
+          << "body pair " << bodyPair;
+      inBoxes += static_cast<long>(boxes.size());
+      kept += static_cast<long>(batched.size());
+    }
+    EXPECT_GT(kept, 10000);
+    EXPECT_LT(kept, inBoxes);
+    EXPECT_LT(undecided, 1e-3 * inBoxes);
+  });
 }
 
 }  // namespace
