@@ -23,25 +23,54 @@ Matrix3r randomTurn(test::RandomSource& random, Real angle) {
   return Eigen::AngleAxis<Real>(random.uniform(0, angle), random.direction()).toRotationMatrix();
 }
 
+// A body pair of the library: its meshes, the smaller volume-equivalent radius, and body 2's pose in body 1's frame.
+struct BodyPairPose {
+  const RoundedMesh &mesh1, &mesh2;
+  Real radius;
+  Matrix3r rotation;
+  Vector3r translation;
+  explicit BodyPairPose(const test::BodyPairCase& c)
+      : mesh1(*c.model.bodies[0].mesh),
+        mesh2(*c.model.bodies[1].mesh),
+        radius(std::min(c.model.bodies[0].equivalentRadius, c.model.bodies[1].equivalentRadius)),
+        rotation((c.data.bodyStates[0].orientation.conjugate() * c.data.bodyStates[1].orientation).toRotationMatrix()),
+        translation(c.data.bodyStates[0].orientation.conjugate() *
+                    (c.data.bodyStates[1].position - c.data.bodyStates[0].position)) {}
+};
+
+// A random triangle pair of the robustness suite's kind for `trial`, body 2 as given or turned about body 1's origin by
+// up to 0.1 rad and moved by up to a tenth of the size; a skin from 1e-5 to 0.1 and a depth up to 0.1 of the size.
+struct TrianglePairCase {
+  test::TrianglePair pair;
+  Matrix3r rotation = Matrix3r::Identity();
+  Vector3r translation = Vector3r::Zero();
+  Real skin, depth;
+};
+
+TrianglePairCase randomCase(test::RandomSource& random, long trial) {
+  TrianglePairCase c{test::randomTrianglePair(random, test::pairKind(trial))};
+  if (trial % 2) {
+    c.rotation = randomTurn(random, 0.1);
+    c.translation = random.uniform(0, 0.1) * c.pair.size * random.direction();
+  }
+  c.skin = c.pair.size * std::exp(random.uniform(std::log(1e-5), std::log(0.1)));
+  c.depth = c.pair.size * random.uniform(0, 0.1);
+  return c;
+}
+
+// More copies of the pair than the widest vector holds, and not a multiple of it: whole vectors and a tail.
+const Pairs kCopies(2 * 8 + 3, TrianglePair{0, 0});
+
 TEST(BatchedCandidates, RandomTrianglePairsGiveTheReferenceDecision) {
   test::RandomSource random(20261127);
-  // More copies than the widest vector holds, and not a multiple of it: whole vectors and a tail.
-  const Pairs near(2 * 8 + 3, TrianglePair{0, 0});
+  const Pairs& near = kCopies;
   long kept = 0, rejected = 0;
   for (long trial = 0; trial < 100000; ++trial) {
-    const test::TrianglePair pair = test::randomTrianglePair(random, test::pairKind(trial));
-    // Body 2 as given, or turned about body 1's origin by up to 0.1 rad and moved by up to a tenth of the size.
-    Matrix3r rotation = Matrix3r::Identity();
-    Vector3r translation = Vector3r::Zero();
-    if (trial % 2) {
-      rotation = randomTurn(random, 0.1);
-      translation = random.uniform(0, 0.1) * pair.size * random.direction();
-    }
-    const Real skin = pair.size * std::exp(random.uniform(std::log(1e-5), std::log(0.1)));
-    const Real depth = pair.size * random.uniform(0, 0.1);
+    const TrianglePairCase c = randomCase(random, trial);
+    const test::TrianglePair& pair = c.pair;
     Pairs reference, batched;
-    touchableTrianglePairs(pair.p, pair.q, rotation, translation, skin, depth, near, reference);
-    touchableTrianglePairsBatched(pair.p, pair.q, rotation, translation, skin, depth, near, batched);
+    touchableTrianglePairs(pair.p, pair.q, c.rotation, c.translation, c.skin, c.depth, near, reference);
+    touchableTrianglePairsBatched(pair.p, pair.q, c.rotation, c.translation, c.skin, c.depth, near, batched);
     ASSERT_EQ(batched, reference) << "trial " << trial;
     (reference.empty() ? rejected : kept) += 1;
   }
@@ -58,11 +87,11 @@ TEST(BatchedCandidates, RandomBodyPairsGiveTheReferenceLists) {
   while (scanned < 50000) {
     ASSERT_LT(++bodyPairs, 5000) << "too few near pairs";
     const test::BodyPairCase c = test::randomBodyPair(random, library);
-    const RoundedMesh &mesh1 = *c.model.bodies[0].mesh, &mesh2 = *c.model.bodies[1].mesh;
-    const BodyState &s1 = c.data.bodyStates[0], &s2 = c.data.bodyStates[1];
-    const Real radius = std::min(c.model.bodies[0].equivalentRadius, c.model.bodies[1].equivalentRadius);
-    const Matrix3r rotation = (s1.orientation.conjugate() * s2.orientation).toRotationMatrix();
-    const Vector3r translation = s1.orientation.conjugate() * (s2.position - s1.position);
+    const BodyPairPose pose(c);
+    const RoundedMesh &mesh1 = pose.mesh1, &mesh2 = pose.mesh2;
+    const Real radius = pose.radius;
+    const Matrix3r& rotation = pose.rotation;
+    const Vector3r& translation = pose.translation;
     // The engine's skins (0.001 to 0.01 r_eq, the near list's five times larger) and depths (shallow, or twice).
     const Real skin = radius * std::exp(random.uniform(std::log(1e-3), std::log(1e-2)));
     const Real shallow = kDeepestOverlap * radius;
@@ -102,21 +131,13 @@ Pairs passingFilters2to4(const RoundedMesh& mesh1, const RoundedMesh& mesh2, con
 TEST(BatchedCandidates, NearFiltersOfRandomTrianglePairsAreTheReferences) {
   test::forEachInstructionSet([&](int64_t) {
     test::RandomSource random(20261206);
-    const Pairs copies(2 * 8 + 3, TrianglePair{0, 0});
     long kept = 0, rejected = 0;
     for (long trial = 0; trial < 20000; ++trial) {
-      const test::TrianglePair pair = test::randomTrianglePair(random, test::pairKind(trial));
-      Matrix3r rotation = Matrix3r::Identity();
-      Vector3r translation = Vector3r::Zero();
-      if (trial % 2) {
-        rotation = randomTurn(random, 0.1);
-        translation = random.uniform(0, 0.1) * pair.size * random.direction();
-      }
-      const Real skin = pair.size * std::exp(random.uniform(std::log(1e-5), std::log(0.1)));
-      const Real reach = skin + pair.size * random.uniform(0, 0.1);
-      Pairs batched = copies;
-      keepPassingFilters2to4Batched(pair.p, pair.q, rotation, translation, skin, reach, batched);
-      ASSERT_EQ(batched, passingFilters2to4(pair.p, pair.q, rotation, translation, skin, reach, copies))
+      const TrianglePairCase c = randomCase(random, trial);
+      const RoundedMesh &p = c.pair.p, &q = c.pair.q;
+      Pairs batched = kCopies;
+      keepPassingFilters2to4Batched(p, q, c.rotation, c.translation, c.skin, c.depth + c.skin, batched);
+      ASSERT_EQ(batched, passingFilters2to4(p, q, c.rotation, c.translation, c.skin, c.depth + c.skin, kCopies))
           << "trial " << trial;
       (batched.empty() ? rejected : kept) += 1;
     }
@@ -132,21 +153,17 @@ TEST(BatchedCandidates, NearFiltersOfBodyPairsTreesAreTheReferences) {
     long inBoxes = 0, kept = 0, undecided = 0;
     for (int bodyPair = 0; bodyPair < 300; ++bodyPair) {
       const test::BodyPairCase c = test::randomBodyPair(random, library);
-      const RoundedMesh &mesh1 = *c.model.bodies[0].mesh, &mesh2 = *c.model.bodies[1].mesh;
-      const BodyState &s1 = c.data.bodyStates[0], &s2 = c.data.bodyStates[1];
-      const Real radius = std::min(c.model.bodies[0].equivalentRadius, c.model.bodies[1].equivalentRadius);
-      const Matrix3r rotation = (s1.orientation.conjugate() * s2.orientation).toRotationMatrix();
-      const Vector3r translation = s1.orientation.conjugate() * (s2.position - s1.position);
+      const BodyPairPose p(c);
       // A near list's skin (five times the engine's 0.001 to 0.01 r_eq) and a depth up to twice the Hertz range.
-      const Real skin = 5 * radius * std::exp(random.uniform(std::log(1e-3), std::log(1e-2)));
-      const Real reach = skin + 2 * kDeepestOverlap * radius * random.uniform(0, 1);
+      const Real skin = 5 * p.radius * std::exp(random.uniform(std::log(1e-3), std::log(1e-2)));
+      const Real reach = skin + 2 * kDeepestOverlap * p.radius * random.uniform(0, 1);
       Pairs boxes;
-      TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, reach,
+      TriangleTree::queryPairs(p.mesh1.tree(), p.mesh2.tree(), p.rotation, p.translation, reach,
                                [&boxes](int s, int t) { boxes.push_back({s, t}); });
       Pairs batched = boxes;
       undecided += static_cast<long>(
-          keepPassingFilters2to4Batched(mesh1, mesh2, rotation, translation, skin, reach, batched));
-      ASSERT_EQ(batched, passingFilters2to4(mesh1, mesh2, rotation, translation, skin, reach, boxes))
+          keepPassingFilters2to4Batched(p.mesh1, p.mesh2, p.rotation, p.translation, skin, reach, batched));
+      ASSERT_EQ(batched, passingFilters2to4(p.mesh1, p.mesh2, p.rotation, p.translation, skin, reach, boxes))
           << "body pair " << bodyPair;
       inBoxes += static_cast<long>(boxes.size());
       kept += static_cast<long>(batched.size());
