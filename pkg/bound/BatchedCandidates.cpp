@@ -127,7 +127,7 @@ V Separation(const V ax[3], const V ay[3], const V bx[3], const V by[3]) {
 enum class Filters { TwoToFour, FirstPass, Whole };
 
 // Filters 1-5 of touchablePair (TrianglePairCandidates.cpp, canTouch) for the pairs (s, t), in the reference's
-// formulas, as many as kFilters says.
+// formulas, as many as kFilters says (filters 2-4: passesFilters2to4's).
 template <Filters kFilters>
 HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k, VI s, VI t) {
   constexpr bool kWhole = kFilters == Filters::Whole;
@@ -296,7 +296,7 @@ size_t KeptNearPairs(const batched::NearScan& q, int64_t* kept) {
 }
 
 // Over the scan's pairs at positions `kept`: `decision` per pair, 1 if it passes kFilters, 0 if it fails one, -1 if the
-// rounding could tell either way (for the reference's own test).
+// rounding could tell either way (for the reference's own test: touchablePair, or passesFilters2to4 for filters 2-4).
 template <Filters kFilters>
 void Decided(const batched::NearScan& q, const int64_t* kept, size_t count, int64_t* decision) {
   const D d;

@@ -6,7 +6,8 @@
 // filters, the projected triangles of 5 too. Each decides a pair only where its margin, far above the rounding of
 // either computation (see the .cpp), shows the reference's outcome; the few pairs within it go through the
 // reference's own test (touchablePair). So the list is the reference's, pair for pair and in the same order,
-// whatever the vector unit.
+// whatever the vector unit. The near search's filters 2-4 of the pairs the trees give run the same way, their reference
+// passesFilters2to4.
 #pragma once
 
 #include <cstddef>

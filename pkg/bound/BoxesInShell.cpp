@@ -12,6 +12,9 @@
 namespace roundedmesh {
 namespace shell {
 
+// The columns' padding: a multiple of the lanes the kernel takes, at most 16 doubles, on every vector unit.
+constexpr size_t kWholeVectors = 16;
+
 // The two boxes' corners.
 struct Query {
   Real outerMin[3], outerMax[3], innerMin[3], innerMax[3];
@@ -30,7 +33,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 // Returns how many positions it wrote to `kept`. A compressed store writes a whole vector, which stays within the
 // first i + lanes entries since the count written is at most i.
 size_t BoxesInShellLanes(const BoxColumns& boxes, const shell::Query& q, int64_t* kept) {
-  const hn::ScalableTag<double> d;
+  const hn::CappedTag<double, shell::kWholeVectors> d;  // a power of two lanes, at most 16: whole vectors
   const hn::RebindToSigned<decltype(d)> di;
   const size_t lanes = hn::Lanes(d);
   size_t count = 0;
@@ -61,14 +64,9 @@ namespace roundedmesh {
 
 HWY_EXPORT(BoxesInShellLanes);
 
-namespace {
-// A multiple of every vector unit's width in doubles.
-constexpr size_t kWholeVectors = 16;
-}  // namespace
-
 void BoxColumns::assign(const std::vector<AlignedBox3r>& boxes, const std::vector<int>& which) {
   size_ = which.size();
-  const size_t padded = (size_ + kWholeVectors - 1) / kWholeVectors * kWholeVectors;
+  const size_t padded = (size_ + shell::kWholeVectors - 1) / shell::kWholeVectors * shell::kWholeVectors;
   for (int axis = 0; axis < 3; ++axis) {
     // The padding's boxes are NaN: they meet nothing.
     min_[axis].assign(padded, std::numeric_limits<Real>::quiet_NaN());
@@ -90,7 +88,7 @@ void boxesInShell(const BoxColumns& boxes, const AlignedBox3r& outer, const Alig
     q.innerMin[axis] = inner.min()[axis];
     q.innerMax[axis] = inner.max()[axis];
   }
-  kept.resize(boxes.paddedSize() + kWholeVectors);
+  kept.resize(boxes.paddedSize() + shell::kWholeVectors);
   kept.resize(HWY_DYNAMIC_DISPATCH(BoxesInShellLanes)(boxes, q, kept.data()));
 }
 

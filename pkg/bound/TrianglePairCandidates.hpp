@@ -20,7 +20,8 @@
 //                overlap; tested on the plane of now, with a grown to its largest within the motion and every
 //                distance given the slack by which the motion can move c, tilt n and move the corners.
 // Two levels, as a Verlet list with an outer shell: nearTrianglePairs searches the triangle trees with
-// filters 1-4 (all five for a deep pair's pairs past the Hertz range) for a large skin, rarely;
+// filters 1-4 (the trees filter 1, filters 2-4 follow in lanes; all five for a deep pair's pairs past the Hertz range)
+// for a large skin, rarely;
 // touchableTrianglePairs takes from such a list, with no search, the pairs that pass all five filters for a small
 // skin. A pose within the small skin of the inner list's, whose pose is within (large - small) of the outer list's,
 // is within the large skin of the outer list's.

@@ -1,7 +1,7 @@
 // Law2's damping and Eq. 15 for many triangle contacts at once (a pair's contacts, in lanes): for each lane, from
 // the contact's elastic load Fe, Me (elasticLoad, Law2_PressureGeom_HertzPhys_IntegratedPressure.hpp),
 //   c_p = (-Me_y, Me_x) / Fe                                 the centre of pressure, about c [m]
-//   ddelta/dt = ddelta/dt(c) + slope . c_p                   the approach rate there (at c where Fe = 0) [m/s]
+//   ddelta/dt = ddelta/dt(c) + slope . c_p                   the approach rate there (at c unless Fe > 0) [m/s]
 //   f = max(1 + A (ddelta/dt) / delta_s, 0)                  Eq. 7's damping factor (HertzPressure.hpp)
 //   Fn = f Fe, Mn = f Me                                     the damped load [N, N m]
 //   f_i = Fn lambda_i / sum(lambda), lambda_i >= 0           the node forces of Eq. 15 (NodeForces.hpp) [N]
@@ -41,7 +41,7 @@ struct DampedLoads {
   std::array<Real, 3> nodeForces(int k) const { return {nodeForce[0][k], nodeForce[1][k], nodeForce[2][k]}; }
 };
 
-// Fills the outputs of lanes [0, size).
+// Fills the outputs of lanes [0, size); the inputs of the lanes past `size` become copies of lane 0's.
 void dampLoads(DampedLoads& batch);
 
 }  // namespace roundedmesh

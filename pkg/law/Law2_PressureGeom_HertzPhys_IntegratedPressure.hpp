@@ -59,7 +59,7 @@ NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& ge
 // Law2's two halves, for the engine, which damps a pair's contacts together (DampedLoads.hpp):
 // the elastic load, the pressure at ddelta/dt = 0 integrated (force, moment, regime, elastic energy);
 NormalLoad elasticLoad(const PressureGeom& geom, const HertzPhys& phys, const PressureOptions& options);
-// that load kept as its elastic part and scaled by Eq. 7's damping at its centre of pressure (at c where it is zero).
+// that load kept as its elastic part and scaled by Eq. 7's damping at its centre of pressure (at c unless Fn > 0).
 NormalLoad dampedLoad(NormalLoad elastic, const PressureGeom& geom, const HertzPhys& phys);
 
 }  // namespace roundedmesh

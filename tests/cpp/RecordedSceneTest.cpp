@@ -13,6 +13,9 @@
 #include "bench/RecordedScene.hpp"
 #include "hwy/targets.h"
 #include "pkg/bound/BatchedCandidates.hpp"
+#include "pkg/bound/CapReach.hpp"
+#include "pkg/bound/TrianglePairCandidates.hpp"
+#include "pkg/engine/CandidateLists.hpp"
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/PairLoad.hpp"
 #include "pkg/engine/ContactStep.hpp"
@@ -143,6 +146,84 @@ TEST(RecordedScene, BatchedListsAreTheReferenceLists) {
   // The batches decide nearly every pair themselves (2 of 5.3 million left to the reference's test here): a pair the
   // reference decides costs about 12 times as much.
   EXPECT_LT(undecided, 1e-4 * scanned);
+}
+
+// nearTrianglePairs as it was before its batches (each pair of the trees through passesFilters2to4 as the search meets
+// it, a deep pair's shell of box pairs compared one pair at a time, and those through touchableTrianglePairs).
+std::vector<TrianglePair> nearPairsOneAtATime(const RoundedMesh& mesh1, const RoundedMesh& mesh2,
+                                              const Matrix3r& rotation, const Vector3r& translation, Real skin,
+                                              Real depth, Real shallow) {
+  std::vector<TrianglePair> pairs;
+  const Matrix3r back = rotation.transpose();
+  const Vector3r backTranslation = -(back * translation);
+  auto reaches1 = [&](int s) { return capReaches(mesh1, s, PlacedMesh{mesh2, rotation, translation}, 2 * skin); };
+  auto reaches2 = [&](int t) { return capReaches(mesh2, t, PlacedMesh{mesh1, back, backTranslation}, 2 * skin); };
+  auto nearer = [&](int t) { return transformedBox(mesh2.tree().triangleBox(t), rotation, translation, shallow + skin); };
+  if (depth <= 2 * shallow) {
+    TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, depth + skin, [&](int s, int t) {
+      if (!passesFilters2to4(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin)) return;
+      const bool onlyDeep = depth > shallow && !mesh1.tree().triangleBox(s).intersects(nearer(t));
+      if (!onlyDeep || (reaches1(s) && reaches2(t))) pairs.push_back({s, t});
+    });
+    return pairs;
+  }
+  TriangleTree::queryPairs(mesh1.tree(), mesh2.tree(), rotation, translation, shallow + skin, [&](int s, int t) {
+    if (passesFilters2to4(mesh1, s, mesh2, t, rotation, translation, skin, depth + skin)) pairs.push_back({s, t});
+  });
+  std::vector<TrianglePair> shell, touchable;
+  for (int t = 0; t < mesh2.triangleCount(); ++t) {
+    if (!reaches2(t)) continue;
+    const AlignedBox3r within = transformedBox(mesh2.tree().triangleBox(t), rotation, translation, depth + skin);
+    for (int s = 0; s < mesh1.triangleCount(); ++s) {
+      const AlignedBox3r& box1 = mesh1.tree().triangleBox(s);
+      if (reaches1(s) && box1.intersects(within) && !box1.intersects(nearer(t))) shell.push_back({s, t});
+    }
+  }
+  touchableTrianglePairs(mesh1, mesh2, rotation, translation, skin, depth, shell, touchable);
+  pairs.insert(pairs.end(), touchable.begin(), touchable.end());
+  return pairs;
+}
+
+// The near searches of every body pair's list in the settled packing and at a step of the landing window (lists as
+// deep as the bodies among them), at the pose, skin and depth each near list was built with, and again with every
+// list at twice and at three times its depth (between the Hertz range and twice it; past twice it): the batched search
+// gives the lists of the search one pair at a time, pair for pair and in the same order.
+TEST(RecordedScene, NearSearchIsTheSearchOnePairAtATime) {
+  const ContactModel& model = scene().model;
+  const int bodyCount = static_cast<int>(model.bodies.size());
+  long searches = 0, nearPairs = 0, deep = 0;
+  for (int frame = 0; frame < 2; ++frame) {
+    ContactData data;
+    if (frame == 0)
+      scene().setStates(data);
+    else
+      scene().setStates(data, scene().landing, 10);
+    contactForces(model, data);
+    for (size_t n = 0; n < data.neighbours.size(); ++n) {
+      const CandidateList& list = data.candidateLists[n];
+      const BodyPair& pair = data.neighbours[n];
+      if (!(list.nearSkin > 0) || pair.other >= bodyCount) continue;
+      const RoundedBody &body = model.bodies[pair.body], &other = model.bodies[pair.other];
+      const Real shallow = kDeepestOverlap * std::min(body.equivalentRadius, other.equivalentRadius);
+      const Matrix3r rotation = list.nearRotation.toRotationMatrix();
+      // Every 20th list also deeper, into the other two branches of the search.
+      for (const Real scale : {1.0, 2.0, 3.0}) {
+        if (scale > 1 && n % 20 != 0) continue;
+        const Real depth = scale == 1 ? list.nearDepth : std::max(list.nearDepth, scale * shallow);
+        std::vector<TrianglePair> batched;
+        nearTrianglePairs(*body.mesh, *other.mesh, rotation, list.nearTranslation, list.nearSkin, depth, shallow, batched);
+        ASSERT_EQ(batched, nearPairsOneAtATime(*body.mesh, *other.mesh, rotation, list.nearTranslation, list.nearSkin,
+                                               depth, shallow))
+            << "frame " << frame << ", pair " << pair.body << "-" << pair.other << ", depth " << depth;
+        ++searches;
+        nearPairs += static_cast<long>(batched.size());
+        deep += depth > 2 * shallow;
+      }
+    }
+  }
+  EXPECT_GT(searches, 4000);
+  EXPECT_GT(nearPairs, 1000000);
+  EXPECT_GT(deep, 200);
 }
 
 // The narrow phase clips the polygons S of a pair's candidates in lanes where the vector unit is wide enough for that
