@@ -60,8 +60,9 @@ class TriangleTree {
 // AlignedBox3r::intersects with its six comparisons joined without branches: one branch on the outcome, where the
 // traversal of a tree would mispredict several.
 inline bool meet(const AlignedBox3r& a, const AlignedBox3r& b) {
-  return (a.min().x() <= b.max().x()) & (a.min().y() <= b.max().y()) & (a.min().z() <= b.max().z()) &
-         (b.min().x() <= a.max().x()) & (b.min().y() <= a.max().y()) & (b.min().z() <= a.max().z());
+  const int all = int(a.min().x() <= b.max().x()) & int(a.min().y() <= b.max().y()) & int(a.min().z() <= b.max().z()) &
+                  int(b.min().x() <= a.max().x()) & int(b.min().y() <= a.max().y()) & int(b.min().z() <= a.max().z());
+  return all != 0;
 }
 
 // The axis-aligned box of `box` rotated and translated: centre R c + t, half-sizes |R| h, grown by margin.

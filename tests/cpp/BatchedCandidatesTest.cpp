@@ -44,7 +44,7 @@ struct TrianglePairCase {
   test::TrianglePair pair;
   Matrix3r rotation = Matrix3r::Identity();
   Vector3r translation = Vector3r::Zero();
-  Real skin, depth;
+  Real skin = 0, depth = 0;
 };
 
 TrianglePairCase randomCase(test::RandomSource& random, long trial) {

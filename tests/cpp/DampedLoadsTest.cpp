@@ -167,8 +167,9 @@ TEST(DampedLoads, PairLoadGivesEachContactLaw2sLoadAndNodeForces) {
       ASSERT_TRUE(sameBits(load.overlapRate, expected.overlapRate)) << at;
       ASSERT_TRUE(sameBits(load.elasticEnergy, expected.elasticEnergy)) << at;
       ASSERT_TRUE(sameBits(listed[k].nodeForces, nodeForces(geoms[k].nodes, expected))) << at;
-      if (geoms[k].partnerTriangle >= 0)
+      if (geoms[k].partnerTriangle >= 0) {
         ASSERT_TRUE(sameBits(listed[k].partnerNodeForces, nodeForces(geoms[k].partnerNodes, expected))) << at;
+      }
       ++contacts;
       energyLaw += bodyPair % 2;
     }
