@@ -33,6 +33,19 @@ struct Tally {
   long lanes = 0, clamped = 0, unloaded = 0, edgeOn = 0, weightClamped = 0;
 };
 
+// Every field of a NormalLoad bit for bit (the regime equal), naming the first that differs.
+::testing::AssertionResult sameLoad(const NormalLoad& got, const NormalLoad& expected) {
+  if (!sameBits(got.force, expected.force))
+    return ::testing::AssertionFailure() << "force " << got.force << " against " << expected.force;
+  if (!sameBits(got.moment, expected.moment)) return ::testing::AssertionFailure() << "moment";
+  if (got.regime != expected.regime) return ::testing::AssertionFailure() << "regime";
+  if (!sameBits(got.elasticForce, expected.elasticForce)) return ::testing::AssertionFailure() << "elastic force";
+  if (!sameBits(got.elasticMoment, expected.elasticMoment)) return ::testing::AssertionFailure() << "elastic moment";
+  if (!sameBits(got.overlapRate, expected.overlapRate)) return ::testing::AssertionFailure() << "approach rate";
+  if (!sameBits(got.elasticEnergy, expected.elasticEnergy)) return ::testing::AssertionFailure() << "elastic energy";
+  return ::testing::AssertionSuccess();
+}
+
 // Each lane of `batch` (filled from `elastic` and `geoms`) against dampedLoad and nodeForces.
 void checkBatch(const std::vector<NormalLoad>& elastic, const std::vector<PressureGeom>& geoms, const HertzPhys& phys,
                 const std::string& where, Tally& tally) {
@@ -47,13 +60,7 @@ void checkBatch(const std::vector<NormalLoad>& elastic, const std::vector<Pressu
       const std::string at = where + ", contact " + std::to_string(first + k);
       const NormalLoad expected = dampedLoad(elastic[first + k], geoms[first + k], phys);
       const NormalLoad lanes = batch.load(k);
-      ASSERT_TRUE(sameBits(lanes.force, expected.force)) << at << ": " << lanes.force << " " << expected.force;
-      ASSERT_TRUE(sameBits(lanes.moment, expected.moment)) << at;
-      ASSERT_EQ(lanes.regime, expected.regime) << at;
-      ASSERT_TRUE(sameBits(lanes.elasticForce, expected.elasticForce)) << at;
-      ASSERT_TRUE(sameBits(lanes.elasticMoment, expected.elasticMoment)) << at;
-      ASSERT_TRUE(sameBits(lanes.overlapRate, expected.overlapRate)) << at;
-      ASSERT_TRUE(sameBits(lanes.elasticEnergy, expected.elasticEnergy)) << at;
+      ASSERT_TRUE(sameLoad(lanes, expected)) << at;
       const std::array<Real, 3> forces = nodeForces(geoms[first + k].nodes, expected);
       ASSERT_TRUE(sameBits(batch.nodeForces(k), forces)) << at;
       ++tally.lanes;
@@ -158,14 +165,7 @@ TEST(DampedLoads, PairLoadGivesEachContactLaw2sLoadAndNodeForces) {
     for (size_t k = 0; k < geoms.size(); ++k) {
       const NormalLoad expected = Law2_PressureGeom_HertzPhys_IntegratedPressure(geoms[k], law.phys, law.pressure);
       const std::string at = "body pair " + std::to_string(bodyPair) + ", contact " + std::to_string(k);
-      const NormalLoad& load = listed[k].load;
-      ASSERT_TRUE(sameBits(load.force, expected.force)) << at;
-      ASSERT_TRUE(sameBits(load.moment, expected.moment)) << at;
-      ASSERT_EQ(load.regime, expected.regime) << at;
-      ASSERT_TRUE(sameBits(load.elasticForce, expected.elasticForce)) << at;
-      ASSERT_TRUE(sameBits(load.elasticMoment, expected.elasticMoment)) << at;
-      ASSERT_TRUE(sameBits(load.overlapRate, expected.overlapRate)) << at;
-      ASSERT_TRUE(sameBits(load.elasticEnergy, expected.elasticEnergy)) << at;
+      ASSERT_TRUE(sameLoad(listed[k].load, expected)) << at;
       ASSERT_TRUE(sameBits(listed[k].nodeForces, nodeForces(geoms[k].nodes, expected))) << at;
       if (geoms[k].partnerTriangle >= 0) {
         ASSERT_TRUE(sameBits(listed[k].partnerNodeForces, nodeForces(geoms[k].partnerNodes, expected))) << at;
