@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "pkg/engine/PairGeometry.hpp"
 #include "pkg/meshing/BodyMesh.hpp"
 #include "pkg/shape/PrincipalCurvature.hpp"
 #include "pkg/shape/TriangleSurface.hpp"
@@ -157,6 +158,14 @@ RecordedScene loadRecordedScene(const std::string& folder) {
   scene.resting = readTrajectory(folder + "/s1_resting.bin", scene.bodyStates.size() + 1);
   scene.landing = readTrajectory(folder + "/s1_landing.bin", scene.bodyStates.size() + 1);
   return scene;
+}
+
+BodyPairFrame bodyPairFrame(const ContactModel& model, const ContactData& data, const BodyPair& pair) {
+  const BodyState &s1 = data.bodyStates[pair.body], &s2 = data.bodyStates[pair.other];
+  const Matrix3r toBody = s1.orientation.toRotationMatrix().transpose();
+  return {(s1.orientation.conjugate() * s2.orientation).toRotationMatrix(), toBody * (s2.position - s1.position),
+          relativeMotion(s1, s2, toBody),
+          kDeepestOverlap * std::min(model.bodies[pair.body].equivalentRadius, model.bodies[pair.other].equivalentRadius)};
 }
 
 }  // namespace roundedmesh

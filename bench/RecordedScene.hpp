@@ -26,6 +26,17 @@ struct RecordedScene {
   void setStates(ContactData& data, const Trajectory& trajectory, int k) const;
 };
 
+// A pair of the scene's bodies as the engine's pairGeometry places it for the narrow phase: body 2's pose in body 1's
+// frame (x1 = rotation * x2 + translation), its motion relative to body 1, and the Hertz range `shallow` [m], so that
+// tests and benchmarks can call Ig2 on the pair's candidate list directly.
+struct BodyPairFrame {
+  Matrix3r rotation;
+  Vector3r translation;
+  RelativeMotion motion;
+  Real shallow;
+};
+BodyPairFrame bodyPairFrame(const ContactModel& model, const ContactData& data, const BodyPair& pair);
+
 // Frames 0, 1, ..., n-1, n-2, ..., 1, 0, 1, ... of a trajectory of n frames at steps 0, 1, 2, ...: the recorded
 // motion forth and back, without a jump.
 int frameAt(long step, int frames);

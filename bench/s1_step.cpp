@@ -13,19 +13,23 @@
 //   s1Step/stages/...          the same with timing = 'stages': the CPU time of each stage inside the pairs (lists,
 //                              near searches, narrow phase, law, core) per step, and the near pairs scanned
 //   BM_S1NarrowPhase           Ig2 over every pair's candidates of the settled packing (time per contact)
+//   BM_S1NarrowPhaseLanes/lanes  Ig2 of two rounded bodies over every such pair's candidates of the settled packing,
+//                              one at a time (0) or in lanes (1), whichever the vector unit (time per contact)
 //   BM_S1Load/friction         Law2, node forces and friction over its triangle contacts (time per contact)
 //   BM_S1NearSearch/motion     the near searches in the triangle trees of every body pair's list, the settled
 //                              packing (0) or a step of the landing window (3) (time per search)
 // Counters per step: body pairs, candidates, contacts, candidates per contact, list rebuilds, stage times.
 //   build/bench/roundedmesh_s1_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // The thread counts of the first BM_S1Step series are 1 and 2, or those listed in ROUNDEDMESH_BENCH_THREADS
-// (comma-separated, for larger machines), e.g. ROUNDEDMESH_BENCH_THREADS=1,2,4,8,16.
+// (comma-separated, for larger machines), e.g. ROUNDEDMESH_BENCH_THREADS=1,2,4,8,16. The kernels run on the
+// processor's best vector unit, or the one named in ROUNDEDMESH_BENCH_TARGET, e.g. ROUNDEDMESH_BENCH_TARGET=SSE4.
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
 #include <string>
 #include <vector>
 
+#include "bench/InstructionSet.hpp"
 #include "bench/RecordedScene.hpp"
 #include "bench/ThreadCounts.hpp"
 #include "pkg/bound/BatchedCandidates.hpp"
@@ -33,6 +37,7 @@
 #include "pkg/engine/CandidateLists.hpp"
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/PairLoad.hpp"
+#include "pkg/geom/Ig2_RoundedMesh_RoundedMesh_PressureGeom.hpp"
 #include "pkg/engine/ContactStep.hpp"
 
 namespace roundedmesh {
@@ -182,6 +187,41 @@ void BM_S1NarrowPhase(benchmark::State& state) {
 }
 BENCHMARK(BM_S1NarrowPhase)->Unit(benchmark::kMillisecond);
 
+// What PolygonLanes chooses between, on the same candidates (triangleIntersectionsPay() decides it in the engine).
+void BM_S1NarrowPhaseLanes(benchmark::State& state) {
+  const ContactModel& model = scene().model;
+  SettledStep& step = settled();
+  const PolygonLanes lanes = state.range(0) == 1 ? PolygonLanes::Always : PolygonLanes::Never;
+  std::vector<const BodyPair*> bodyPairs;
+  std::vector<BodyPairFrame> frames;
+  for (const BodyPair& pair : step.data.pairs)
+    if (pair.other < static_cast<int>(model.bodies.size())) {
+      bodyPairs.push_back(&pair);
+      frames.push_back(bodyPairFrame(model, step.data, pair));
+    }
+  std::vector<PressureGeom> geoms;
+  long contacts = 0;
+  for (auto _ : state) {
+    contacts = 0;
+    for (size_t k = 0; k < bodyPairs.size(); ++k) {
+      const BodyPair& pair = *bodyPairs[k];
+      const BodyPairFrame& frame = frames[k];
+      geoms.clear();
+      Ig2_RoundedMesh_RoundedMesh_PressureGeom(*model.bodies[pair.body].mesh, *model.bodies[pair.other].mesh,
+                                               frame.rotation, frame.translation,
+                                               step.data.candidateLists[pair.neighbour].pairs, frame.shallow,
+                                               frame.motion, GeomOutput(geoms), CurvatureModel::Mean, lanes);
+      contacts += static_cast<long>(geoms.size());
+    }
+  }
+  state.counters["ns_per_contact"] = benchmark::Counter(
+      static_cast<double>(contacts) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["contacts"] = static_cast<double>(contacts);
+  state.SetLabel(std::string(lanes == PolygonLanes::Always ? "in lanes on " : "one at a time, batches on ") +
+                 batchedTarget());
+}
+BENCHMARK(BM_S1NarrowPhaseLanes)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 void BM_S1Load(benchmark::State& state) {
   SettledStep& step = settled();
   const ContactModel model = withFriction(scene().model, state.range(0));
@@ -237,4 +277,11 @@ BENCHMARK(BM_S1NearSearch)->Arg(0)->Arg(3)->Unit(benchmark::kMillisecond);
 }  // namespace
 }  // namespace roundedmesh
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  roundedmesh::chooseInstructionSet();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

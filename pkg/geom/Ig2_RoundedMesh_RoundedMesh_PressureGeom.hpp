@@ -1,7 +1,8 @@
 // Ig2 functor: the triangles of two rounded bodies against each other (Appendix B): every candidate pair
-// (TrianglePairCandidates.hpp) goes through triangleSphereGeom with body 2's triangle placed in body 1's frame (on
-// AVX-512, in batches of 16 through three stages in lanes: the contact planes, TrianglePlanes.hpp; the polygons S,
-// TriangleIntersections.hpp; for the paper's circles the rest, PolygonContacts.hpp; the same result bit for bit);
+// (TrianglePairCandidates.hpp) goes through triangleSphereGeom with body 2's triangle placed in body 1's frame
+// (where the vector unit holds 4 doubles or more, in batches of 16 through three stages in lanes: the contact
+// planes, TrianglePlanes.hpp; the polygons S, TriangleIntersections.hpp; for the paper's circles the rest,
+// PolygonContacts.hpp; the same result bit for bit);
 // the segment between the two caps must lie inside both bodies (TriangleExits.hpp, DeepContactCriterion.hpp; the
 // distance fields first for a pair deeper than `shallow` [m]).
 // Inputs: body 2's pose in body 1's frame (x1 = rotation * x2 + translation), the candidates, and body 2's

@@ -121,7 +121,7 @@ void IntersectTriangleLanes(TriangleIntersections& b) {
   }
 }
 
-bool LanesPay() { return hn::Lanes(hn::ScalableTag<double>()) >= 8; }
+bool LanesPay() { return hn::Lanes(hn::ScalableTag<double>()) >= 4; }
 
 }  // namespace HWY_NAMESPACE
 }  // namespace roundedmesh

@@ -38,10 +38,10 @@ struct TriangleIntersections {
 // Fills the outputs of lanes [0, size).
 void intersectTriangles(TriangleIntersections& batch);
 
-// Whether the lanes are quicker than ConvexPolygon one pair at a time on the vector unit chosen here: on AVX-512 (8
-// doubles) they are; on AVX2 (4) the masked placement of each clipped corner costs about what the branches it replaces
-// cost (doc/benchmarks.md, Speed III, steps 5 and 8). The narrow phase's other lanes (TrianglePlanes.hpp,
-// PolygonContacts.hpp) run where these do.
+// Whether the narrow phase's lanes (these, TrianglePlanes.hpp and PolygonContacts.hpp, which run where these do) are
+// quicker than one candidate at a time on the vector unit chosen here: where it holds at least 4 doubles (AVX2,
+// AVX-512) they are, by about a third of the settled packing's narrow phase; on units of 2 (SSE4, SSSE3) the two ways
+// cost the same within a few per cent (doc/benchmarks.md, Speed III, steps 8 and 11).
 bool triangleIntersectionsPay();
 
 }  // namespace roundedmesh

@@ -33,19 +33,13 @@ const RecordedScene& scene() {
 // Every triangle pair of two bodies tested, in the order (s, t).
 std::vector<PressureGeom> bruteForce(const ContactModel& model, const ContactData& data, const BodyPair& pair) {
   const RoundedBody &a = model.bodies[pair.body], &b = model.bodies[pair.other];
-  const BodyState &s1 = data.bodyStates[pair.body], &s2 = data.bodyStates[pair.other];
-  const Matrix3r rotation = (s1.orientation.conjugate() * s2.orientation).toRotationMatrix();
-  const Vector3r translation = s1.orientation.conjugate() * (s2.position - s1.position);
   std::vector<TrianglePair> all;
   for (int s = 0; s < a.mesh->triangleCount(); ++s)
     for (int t = 0; t < b.mesh->triangleCount(); ++t) all.push_back({s, t});
-  const Matrix3r toBody = s1.orientation.toRotationMatrix().transpose();
-  RelativeMotion motion;
-  motion.linear = toBody * (s2.velocity - s1.velocity + s2.angularVelocity.cross(s1.position - s2.position));
-  motion.angular = toBody * (s2.angularVelocity - s1.angularVelocity);
+  const BodyPairFrame frame = bodyPairFrame(model, data, pair);
   std::vector<PressureGeom> geoms;
-  Ig2_RoundedMesh_RoundedMesh_PressureGeom(*a.mesh, *b.mesh, rotation, translation, all,
-                                           kDeepestOverlap * std::min(a.equivalentRadius, b.equivalentRadius), motion, geoms);
+  Ig2_RoundedMesh_RoundedMesh_PressureGeom(*a.mesh, *b.mesh, frame.rotation, frame.translation, all, frame.shallow,
+                                           frame.motion, geoms);
   return geoms;
 }
 
@@ -269,16 +263,12 @@ TEST(RecordedScene, NarrowPhaseInLanesIsOneAtATimeBitForBit) {
       if (pair.other >= bodyCount) continue;
       const CandidateList& list = data.candidateLists[pair.neighbour];
       const RoundedBody &a = model.bodies[pair.body], &b = model.bodies[pair.other];
-      const BodyState &s1 = data.bodyStates[pair.body], &s2 = data.bodyStates[pair.other];
-      const Matrix3r toBody = s1.orientation.toRotationMatrix().transpose();
-      const Matrix3r rotation = (s1.orientation.conjugate() * s2.orientation).toRotationMatrix();
-      const Vector3r translation = toBody * (s2.position - s1.position);
-      const RelativeMotion motion = relativeMotion(s1, s2, toBody);
-      const Real shallow = kDeepestOverlap * std::min(a.equivalentRadius, b.equivalentRadius);
+      const BodyPairFrame frame = bodyPairFrame(model, data, pair);
       for (const CurvatureModel curvature : {CurvatureModel::Mean, CurvatureModel::Principal}) {
         auto narrowPhase = [&](PolygonLanes lanes, std::vector<PressureGeom>& geoms, NarrowPhaseCounts& counts) {
-          Ig2_RoundedMesh_RoundedMesh_PressureGeom(*a.mesh, *b.mesh, rotation, translation, list.pairs, shallow, motion,
-                                                   GeomOutput(geoms, &counts), curvature, lanes);
+          Ig2_RoundedMesh_RoundedMesh_PressureGeom(*a.mesh, *b.mesh, frame.rotation, frame.translation, list.pairs,
+                                                   frame.shallow, frame.motion, GeomOutput(geoms, &counts), curvature,
+                                                   lanes);
         };
         std::vector<PressureGeom> reference;
         NarrowPhaseCounts referenceCounts;
