@@ -13,8 +13,8 @@
 //   s1Step/stages/...          the same with timing = 'stages': the CPU time of each stage inside the pairs (lists,
 //                              near searches, narrow phase, law, core) per step, and the near pairs scanned
 //   BM_S1NarrowPhase           Ig2 over every pair's candidates of the settled packing (time per contact)
-//   BM_S1NarrowPhaseLanes/lanes  Ig2 of two rounded bodies over every such pair's candidates of the settled packing,
-//                              one at a time (0) or in lanes (1), whichever the vector unit (time per contact)
+//   BM_S1NarrowPhaseLanes/lanes  Ig2 over every pair of two bears' candidates of the settled packing, one candidate
+//                              at a time (0) or in lanes (1) on the vector unit in use (time per contact)
 //   BM_S1Load/friction         Law2, node forces and friction over its triangle contacts (time per contact)
 //   BM_S1NearSearch/motion     the near searches in the triangle trees of every body pair's list, the settled
 //                              packing (0) or a step of the landing window (3) (time per search)
@@ -37,8 +37,8 @@
 #include "pkg/engine/CandidateLists.hpp"
 #include "pkg/engine/PairGeometry.hpp"
 #include "pkg/engine/PairLoad.hpp"
-#include "pkg/geom/Ig2_RoundedMesh_RoundedMesh_PressureGeom.hpp"
 #include "pkg/engine/ContactStep.hpp"
+#include "pkg/geom/Ig2_RoundedMesh_RoundedMesh_PressureGeom.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -217,7 +217,7 @@ void BM_S1NarrowPhaseLanes(benchmark::State& state) {
   state.counters["ns_per_contact"] = benchmark::Counter(
       static_cast<double>(contacts) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["contacts"] = static_cast<double>(contacts);
-  state.SetLabel(std::string(lanes == PolygonLanes::Always ? "in lanes on " : "one at a time, batches on ") +
+  state.SetLabel(std::string(lanes == PolygonLanes::Always ? "in lanes on " : "one at a time; vector unit ") +
                  batchedTarget());
 }
 BENCHMARK(BM_S1NarrowPhaseLanes)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
