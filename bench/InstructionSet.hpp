@@ -8,7 +8,7 @@
 #include <iostream>
 #include <string>
 
-#include <hwy/targets.h>
+#include "hwy/targets.h"
 
 namespace roundedmesh {
 

@@ -1,5 +1,6 @@
 #include "bench/RecordedScene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>

@@ -40,7 +40,7 @@ void intersectTriangles(TriangleIntersections& batch);
 
 // Whether the narrow phase's lanes (these, TrianglePlanes.hpp and PolygonContacts.hpp, which run where these do) are
 // quicker than one candidate at a time on the vector unit chosen here: where it holds at least 4 doubles (AVX2,
-// AVX-512) they are, by about a third of the settled packing's narrow phase; on units of 2 (SSE4, SSSE3) the two ways
+// AVX-512) they are, by about 30 % of the settled packing's narrow phase; on units of 2 (SSE4, SSSE3) the two ways
 // cost the same within a few per cent (doc/benchmarks.md, Speed III, steps 8 and 11).
 bool triangleIntersectionsPay();
 

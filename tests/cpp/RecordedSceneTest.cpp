@@ -221,7 +221,7 @@ TEST(RecordedScene, NearSearchIsTheSearchOnePairAtATime) {
 }
 
 // The narrow phase clips the polygons S of a pair's candidates in lanes where the vector unit is wide enough for that
-// to pay (TriangleIntersections.hpp: AVX-512), one candidate at a time elsewhere; both ways give the same triangle
+// to pay (TriangleIntersections.hpp: 4 doubles or more, AVX2 and AVX-512), one candidate at a time elsewhere; both ways give the same triangle
 // contacts bit for bit. Every body pair's candidates in the settled packing and at two steps of the landing window
 // (deep pairs) go through Ig2 both ways, on each instruction set the processor has, with the paper's circles and with
 // the principal curvatures' ellipses: every contact's geometry and the funnel's counts must be those of one candidate
@@ -263,11 +263,11 @@ TEST(RecordedScene, NarrowPhaseInLanesIsOneAtATimeBitForBit) {
       if (pair.other >= bodyCount) continue;
       const CandidateList& list = data.candidateLists[pair.neighbour];
       const RoundedBody &a = model.bodies[pair.body], &b = model.bodies[pair.other];
-      const BodyPairFrame frame = bodyPairFrame(model, data, pair);
+      const BodyPairFrame placed = bodyPairFrame(model, data, pair);
       for (const CurvatureModel curvature : {CurvatureModel::Mean, CurvatureModel::Principal}) {
         auto narrowPhase = [&](PolygonLanes lanes, std::vector<PressureGeom>& geoms, NarrowPhaseCounts& counts) {
-          Ig2_RoundedMesh_RoundedMesh_PressureGeom(*a.mesh, *b.mesh, frame.rotation, frame.translation, list.pairs,
-                                                   frame.shallow, frame.motion, GeomOutput(geoms, &counts), curvature,
+          Ig2_RoundedMesh_RoundedMesh_PressureGeom(*a.mesh, *b.mesh, placed.rotation, placed.translation, list.pairs,
+                                                   placed.shallow, placed.motion, GeomOutput(geoms, &counts), curvature,
                                                    lanes);
         };
         std::vector<PressureGeom> reference;

@@ -45,6 +45,16 @@ TrianglePairInPlane randomPair(test::RandomSource& random) {
   return {ConvexPolygon::triangle(a, b, c), ConvexPolygon::triangle(onAB, onBC, onAB + 1e-9 * (onBC - onAB) + point(1e-12))};
 }
 
+// The engine's narrow phase takes the lanes where the vector unit holds 4 doubles or more (AVX2, AVX-512), where
+// they take about 30 % off it, and not on units of 2 (SSE4, SSSE3), where they save nothing (doc/benchmarks.md,
+// Speed III, step 11).
+TEST(TriangleIntersections, LanesRunWhereTheVectorUnitHoldsFourDoubles) {
+  test::forEachInstructionSet([](int64_t target) {
+    const bool fourOrMore = (target & (HWY_AVX2 | HWY_AVX3 | HWY_AVX3_DL)) != 0;
+    EXPECT_EQ(triangleIntersectionsPay(), fourOrMore);
+  });
+}
+
 TEST(TriangleIntersections, EveryLaneIsConvexPolygonsBitForBit) {
   test::forEachInstructionSet([&](int64_t) {
     test::RandomSource random(5821);
