@@ -16,6 +16,8 @@
 //   BM_S1NarrowPhaseLanes/lanes  Ig2 over every pair of two bears' candidates of the settled packing, one candidate
 //                              at a time (0) or in lanes (1) on the vector unit in use (time per contact)
 //   BM_S1Load/friction         Law2, node forces and friction over its triangle contacts (time per contact)
+//   BM_S1NarrowPhaseThenLoad   Ig2 and then Law2 (friction 0) for each pair in turn, as the step runs them: the two
+//                              stages' time per contact in place, the law's records still in cache
 //   BM_S1NearSearch/motion     the near searches in the triangle trees of every body pair's list, the settled
 //                              packing (0) or a step of the landing window (3) (time per search)
 // Counters per step: body pairs, candidates, contacts, candidates per contact, list rebuilds, stage times.
@@ -149,6 +151,13 @@ BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 2}, {0}, {0}, {0}, {0, 1}, {1}})->Un
 BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {0, 1}, {20, 80}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_S1Step)->ArgsProduct({{1}, {1, 2}, {0}, {5, 20, 40}, {3, 5, 10}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The counters of a benchmark timed per triangle contact: ns_per_contact, the time of one iteration over `contacts`.
+void countPerContact(benchmark::State& state, long contacts) {
+  state.counters["ns_per_contact"] = benchmark::Counter(
+      static_cast<double>(contacts) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["contacts"] = static_cast<double>(contacts);
+}
+
 // The settled packing after one step: its pairs with their candidate lists, and every pair's contacts.
 struct SettledStep {
   ContactData data;
@@ -180,10 +189,7 @@ void BM_S1NarrowPhase(benchmark::State& state) {
       pairGeometry(scene().model, step.data, pair, geoms, statistics, &step.data.candidateLists[pair.neighbour]);
       benchmark::DoNotOptimize(geoms.data());
     }
-  state.counters["ns_per_contact"] =
-      benchmark::Counter(static_cast<double>(step.contacts) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
-                                                                        benchmark::Counter::kInvert);
-  state.counters["contacts"] = static_cast<double>(step.contacts);
+  countPerContact(state, step.contacts);
 }
 BENCHMARK(BM_S1NarrowPhase)->Unit(benchmark::kMillisecond);
 
@@ -214,9 +220,7 @@ void BM_S1NarrowPhaseLanes(benchmark::State& state) {
       contacts += static_cast<long>(geoms.size());
     }
   }
-  state.counters["ns_per_contact"] = benchmark::Counter(
-      static_cast<double>(contacts) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-  state.counters["contacts"] = static_cast<double>(contacts);
+  countPerContact(state, contacts);
   state.SetLabel(std::string(lanes == PolygonLanes::Always ? "in lanes on " : "one at a time; vector unit ") +
                  batchedTarget());
 }
@@ -230,12 +234,27 @@ void BM_S1Load(benchmark::State& state) {
     for (size_t k = 0; k < step.data.pairs.size(); ++k)
       benchmark::DoNotOptimize(pairLoad(model, step.data, step.data.pairs[k], step.geoms[k], nullptr,
                                         &step.data.springs[step.data.pairs[k].neighbour]));
-  state.counters["ns_per_contact"] =
-      benchmark::Counter(static_cast<double>(step.contacts) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
-                                                                        benchmark::Counter::kInvert);
-  state.counters["contacts"] = static_cast<double>(step.contacts);
+  countPerContact(state, step.contacts);
 }
 BENCHMARK(BM_S1Load)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+// Ig2 and then Law2 for each pair in turn, as the step runs them (ContactStep.cpp): the law reads a pair's contact
+// records while the narrow phase's writes are still in cache, where BM_S1Load reads every pair's from memory (the
+// settled packing's 24,217 records of 520 bytes).
+void BM_S1NarrowPhaseThenLoad(benchmark::State& state) {
+  SettledStep& step = settled();
+  const ContactModel& model = scene().model;
+  step.data.timeStep = 1e-4;
+  std::vector<PressureGeom> geoms;
+  for (auto _ : state)
+    for (const BodyPair& pair : step.data.pairs) {
+      ContactStatistics statistics;
+      pairGeometry(model, step.data, pair, geoms, statistics, &step.data.candidateLists[pair.neighbour]);
+      benchmark::DoNotOptimize(pairLoad(model, step.data, pair, geoms, nullptr, &step.data.springs[pair.neighbour]));
+    }
+  countPerContact(state, step.contacts);
+}
+BENCHMARK(BM_S1NarrowPhaseThenLoad)->Unit(benchmark::kMillisecond);
 
 // The near searches (nearTrianglePairs) of every body pair's list after one step of the settled packing (0) or of
 // the landing window's step 10 (3), each at the pose, skin and depth its near list was built with.
