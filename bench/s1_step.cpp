@@ -1,5 +1,5 @@
 // Google Benchmark of the complete C++ contact step on scene S1 with 250 gummy bears (bench/data, recorded
-// by scripts/benchmarks/record_s1_scene.py), without YADE or Python, and of its two per-contact stages alone:
+// by scripts/benchmarks/record_s1_scene.py), without YADE or Python, and of its two per-contact stages:
 //   BM_S1Step/threads/motion/skin/steps/near/friction/curvature   one contactForces step (stages 2-4 of ContactStep.hpp); motion = 0: the settled
 //                              packing again and again (the lists kept between steps stay valid), 1: the recorded
 //                              steps of shaking in order, forth and back (the lists are rebuilt as the bodies move),
@@ -239,8 +239,7 @@ void BM_S1Load(benchmark::State& state) {
 BENCHMARK(BM_S1Load)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 // Ig2 and then Law2 for each pair in turn, as the step runs them (ContactStep.cpp): the law reads a pair's contact
-// records while the narrow phase's writes are still in cache, where BM_S1Load reads every pair's from memory (the
-// settled packing's 24,217 records of 520 bytes).
+// records while the narrow phase's writes are still in cache, where BM_S1Load reads every pair's from memory.
 void BM_S1NarrowPhaseThenLoad(benchmark::State& state) {
   SettledStep& step = settled();
   const ContactModel& model = scene().model;
