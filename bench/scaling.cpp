@@ -46,7 +46,12 @@ size_t engineBytes(const ContactData& data) {
   size_t bytes = capacityBytes(data.neighbours) + capacityBytes(data.neighbourBoxes) + capacityBytes(data.candidateLists) +
                  capacityBytes(data.springs) + capacityBytes(data.boxes) + capacityBytes(data.pairs) +
                  capacityBytes(data.pairResults) + capacityBytes(data.pairRecords) + capacityBytes(data.keptRecords);
-  for (const CandidateList& list : data.candidateLists) bytes += capacityBytes(list.pairs) + capacityBytes(list.near);
+  for (const CandidateList& list : data.candidateLists) {
+    bytes += capacityBytes(list.pairs) + capacityBytes(list.near);
+    if (!list.facet) continue;
+    bytes += sizeof(FacetList) + capacityBytes(list.facet->candidates.face);
+    for (const std::vector<int>& strip : list.facet->candidates.strips) bytes += capacityBytes(strip);
+  }
   return bytes;
 }
 

@@ -15,6 +15,16 @@ Real motionBound(const Quaternionr& fromRotation, const Vector3r& fromTranslatio
   return (translation - fromTranslation).norm() + 2 * (fromRotation.conjugate() * rotation).vec().norm() * boundRadius;
 }
 
+// The radius about the body's centre of the ball that holds every box of its triangle tree [m].
+Real treeRadius(const RoundedMesh& mesh) {
+  const AlignedBox3r& root = mesh.tree().nodes().front().box;
+  return (root.center().cwiseAbs() + 0.5 * root.sizes()).norm();
+}
+
+// A list is kept while the motion bound stays this fraction of the body's tree radius inside its skin: the culling's
+// tests round off by about 1e-16 of the distances they compare.
+constexpr Real kSkinRoundOff = 1e-9;
+
 }  // namespace
 
 Real deepestPossible(const RoundedMesh& a, const RoundedMesh& b) {
@@ -61,6 +71,38 @@ void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const 
   touchableTrianglePairsBatched(mesh1, mesh2, matrix, translation, skin, depth, list.near, list.pairs);
   ++statistics.candidateRebuilds;
   statistics.nearPairsScanned += static_cast<long>(list.near.size());
+}
+
+void updateFacetCandidates(const RoundedMesh& mesh, const Facet& facet, const Matrix3r& toBody,
+                           const Vector3r& facetOrigin, const BodyState& body, const BodyState& facetState,
+                           Real edgeRadius, const ListSkins& skins, Real radius, FacetList& list,
+                           ContactStatistics& statistics) {
+  const Quaternionr toFacet = facetState.orientation.conjugate();
+  const Quaternionr rotation = toFacet * body.orientation;
+  const Vector3r translation = toFacet * (body.position - facetState.position);
+  const Real bound = treeRadius(mesh);
+  Real skin = skins.candidatesMin * radius;
+  if (list.built) {
+    ++list.age;
+    const Real motion = motionBound(list.rotation, list.translation, rotation, translation, bound);
+    const Real roundOff = kSkinRoundOff * bound;
+    if (list.weld == facet.weld && list.vertices == facet.vertices && list.edgeRadius == edgeRadius &&
+        motion + roundOff <= list.skin && (translation - list.translation).norm() + roundOff < list.sideClearance)
+      return;
+    skin = std::clamp(skins.candidateSteps * motion / list.age, skin, skins.candidatesMax * radius);
+  }
+  const PlacedFacet placed = placeFacet(facet, toBody, facetOrigin);
+  const int side = facetSide(placed, &list.sideClearance);
+  facetCandidates(mesh, placed, side, edgeRadius, skin, list.candidates);
+  list.built = true;
+  list.rotation = rotation;
+  list.translation = translation;
+  list.skin = skin;
+  list.age = 0;
+  list.weld = facet.weld;
+  list.vertices = facet.vertices;
+  list.edgeRadius = edgeRadius;
+  ++statistics.candidateRebuilds;
 }
 
 }  // namespace roundedmesh

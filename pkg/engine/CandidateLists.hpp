@@ -26,4 +26,15 @@ void updateCandidates(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const 
                       const Matrix3r& matrix, const Vector3r& translation, const ListSkins& skins, Real radius,
                       Real shallow, Real full, CandidateList& list, ContactStatistics& statistics, bool timed);
 
+// Brings a rounded body's candidate triangles against a Facet partner up to date (FacetList), the facet placed in the
+// body's frame by x_body = toBody x_facet + facetOrigin, `radius` the body's volume-equivalent radius [m], the unit of
+// `skins`. They are made again when they were never made, when the facet's shape or its edge radius changed, when a
+// point of the body's tree may have moved by more than their skin relative to the facet, or its centre far enough to
+// be on the facet's other side (facetSide); the skin follows the pair's motion per step, as a pair of bodies' does.
+// Rebuilds are counted in `statistics` (candidateRebuilds).
+void updateFacetCandidates(const RoundedMesh& mesh, const Facet& facet, const Matrix3r& toBody,
+                           const Vector3r& facetOrigin, const BodyState& body, const BodyState& facetState,
+                           Real edgeRadius, const ListSkins& skins, Real radius, FacetList& list,
+                           ContactStatistics& statistics);
+
 }  // namespace roundedmesh

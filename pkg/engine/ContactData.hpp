@@ -2,16 +2,20 @@
 // model's bodies and partners), the wrenches it produces (force [N] and torque [N m] about each body's own
 // position, global frame), the counts and times of its stages, and what it keeps from step to step: the
 // neighbour list of the broad phase and, per neighbouring pair of rounded bodies, its list of candidate
-// triangle pairs (both Verlet lists, rebuilt only when the motion since their build exceeds their skin), and per
+// triangle pairs, or of a rounded body and a Facet, the body's candidate triangles (Verlet lists, rebuilt only when
+// the motion since their build exceeds their skin), and per
 // neighbouring pair its tangential spring (TangentialSpring.hpp), which lasts as long as the pair touches.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "pkg/engine/BodyState.hpp"
 #include "pkg/engine/ContactModel.hpp"
+#include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
 #include "pkg/geom/PressureGeom.hpp"
 #include "pkg/law/CoulombFriction.hpp"
 #include "pkg/law/NodeForces.hpp"
@@ -45,7 +49,8 @@ struct ContactStatistics {
   int coreContacts = 0;        // touching core spheres (CorePair.hpp): pairs overlapping past the Hertz range
   int slidingContacts = 0;     // triangle and sphere contacts sliding (Eq. 21, or all of a pair's whose spring slides)
   int neighbourRebuilds = 0;   // rebuilds of the broad phase's neighbour list
-  int candidateRebuilds = 0;   // triangle-pair candidate lists rebuilt (from their pair's near list)
+  int candidateRebuilds = 0;   // triangle-pair candidate lists rebuilt (from their pair's near list), and the
+                               // candidate triangles of rounded bodies against Facets
   int nearRebuilds = 0;        // near lists rebuilt from the triangle trees
   long nearPairsScanned = 0;   // triangle pairs of the near lists scanned at the candidate lists' rebuilds
   PairStageTimes cpu;          // under timing = 'stages'
@@ -139,6 +144,23 @@ struct PairResult {
   ContactStatistics statistics;
 };
 
+// The candidate triangles of a rounded body against a Facet partner (FacetCandidates), with what they were made for:
+// the facet's shape and edge radius, the body's side of it, and the body's pose in the facet's frame. They hold while
+// every point of the body's triangle tree moves by at most `skin` relative to the facet from that pose, and its centre
+// by less than `sideClearance`.
+struct FacetList {
+  bool built = false;
+  Quaternionr rotation = Quaternionr::Identity();  // the body's frame in the facet body's, at the build
+  Vector3r translation = Vector3r::Zero();
+  Real skin = 0;           // [m]
+  Real sideClearance = 0;  // how far the body's centre may move before its side can change (facetSide) [m]
+  int age = 0;             // steps since the build
+  std::shared_ptr<const FacetWeld> weld;  // the facet's shape at the build (held, so that no other takes its address)
+  std::array<Vector3r, 3> vertices;
+  Real edgeRadius = 0;  // [m]
+  FacetCandidates candidates;
+};
+
 // Candidate triangle pairs (s of the body, t of the other body) of two rounded bodies, in two levels
 // (TrianglePairCandidates.hpp): `near`, from the triangle trees, holds every pair that can be in contact, with
 // an effective overlap of at most nearDepth, while every point of the other body moves by at most nearSkin
@@ -159,6 +181,8 @@ struct CandidateList {
   Real nearSkin = 0;   // [m]; 0: not built
   Real nearDepth = 0;  // [m]
   std::vector<std::array<int, 2>> near;
+
+  std::unique_ptr<FacetList> facet;  // a rounded body's against a Facet partner instead, made on first use
 };
 
 // Where a body or partner is, seen from this process, when YADE's MPI decomposition (yade.mpy) splits the scene

@@ -1,6 +1,7 @@
 #include "pkg/engine/PairGeometry.hpp"
 
 #include <algorithm>
+#include <memory>
 
 #include "pkg/common/Overloaded.hpp"
 #include "pkg/common/StageClock.hpp"
@@ -84,9 +85,22 @@ void contactGeometry(const ContactModel& model, const ContactData& data, const B
                                                            motion, out, curvature);
                         },
                         [&](const Facet& facet) {
-                          Ig2_RoundedMesh_Facet_PressureGeom(
-                              *body.mesh, placeFacet(facet, R_BW * s2.orientation.toRotationMatrix(), inBody(s2.position)),
-                              edgeRadius, motion, out, curvature);
+                          const Matrix3r toBody = R_BW * s2.orientation.toRotationMatrix();
+                          const Vector3r facetOrigin = inBody(s2.position);
+                          if (!candidates) {
+                            Ig2_RoundedMesh_Facet_PressureGeom(*body.mesh, placeFacet(facet, toBody, facetOrigin),
+                                                               edgeRadius, motion, out, curvature);
+                            return;
+                          }
+                          if (!candidates->facet) candidates->facet = std::make_unique<FacetList>();
+                          FacetList& list = *candidates->facet;
+                          updateFacetCandidates(*body.mesh, facet, toBody, facetOrigin, s1, s2, edgeRadius,
+                                                model.skins, body.equivalentRadius, list, statistics);
+                          statistics.cpu.lists += clock.lap();
+                          // None: the Ig2 would find nothing, and the facet is not placed.
+                          if (!list.candidates.empty())
+                            Ig2_RoundedMesh_Facet_PressureGeom(*body.mesh, placeFacet(facet, toBody, facetOrigin),
+                                                               edgeRadius, motion, out, curvature, &list.candidates);
                         },
                         [&](const Sphere& sphere) {
                           Ig2_RoundedMesh_Sphere_PressureGeom(

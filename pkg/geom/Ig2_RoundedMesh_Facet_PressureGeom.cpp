@@ -44,14 +44,17 @@ bool treeMayReach(const RoundedMesh& mesh, const PlacedFacet& facet, const Vecto
 
 // The side of the surface the body's centre (the origin) is on, seen from this facet: the side of its plane, unless
 // the centre lies behind the plane past an edge that is convex from the other side, and in front of the facets beyond
-// that edge: then it is outside a ridge (above a lifter's apex, past its plane's reach), on the other side.
-int surfaceSide(const PlacedFacet& facet, const Vector3r& normal) {
+// that edge: then it is outside a ridge (above a lifter's apex, past its plane's reach), on the other side. With
+// `clearance`, how far the centre lies from the nearest plane whose side it decides by.
+int surfaceSide(const PlacedFacet& facet, const Vector3r& normal, Real* clearance) {
   const Vector3r& origin = facet.corners[0];
   const int planeSide = normal.dot(origin) > 0 ? 1 : 0;
   const int other = 1 - planeSide;
+  if (clearance) *clearance = std::abs(normal.dot(origin));
   const Vector3r centroid = (facet.corners[0] + facet.corners[1] + facet.corners[2]) / 3;
   const int n = static_cast<int>(facet.outline.size());
-  for (int k = 0; k < n; ++k) {
+  int side = planeSide;
+  for (int k = 0; k < n && (clearance || side == planeSide); ++k) {
     const FacetWeld& weld = *facet.weld;
     if (weld.outlineClosed[k][other] || !weld.outlineClosed[k][planeSide] || !facet.outlineBeyond[k].allFinite())
       continue;
@@ -60,17 +63,22 @@ int surfaceSide(const PlacedFacet& facet, const Vector3r& normal) {
     if (beyondNormal.dot(centroid - a) > 0) beyondNormal = -beyondNormal;
     const Vector3r pastEdge = normal.cross(b - a);  // in the plane, across the edge
     const Real past = pastEdge.dot(-a) * pastEdge.dot(centroid - a);
-    if (past < 0 && beyondNormal.dot(-a) > 0) return other;
+    if (past < 0 && beyondNormal.dot(-a) > 0) side = other;
+    if (clearance)
+      *clearance = std::min({*clearance, std::abs(pastEdge.dot(a)) / pastEdge.norm(),
+                             std::abs(beyondNormal.dot(a)) / beyondNormal.norm()});
   }
-  return planeSide;
+  return side;
 }
 
 }  // namespace
 
-int facetSide(const PlacedFacet& facet) {
+int facetSide(const PlacedFacet& facet, Real* clearance) {
   const std::array<Vector3r, 3>& c = facet.corners;
   const Vector3r normal = (c[1] - c[0]).cross(c[2] - c[0]).normalized();
-  return facet.weld ? surfaceSide(facet, normal) : (normal.dot(c[0]) > 0 ? 1 : 0);
+  if (facet.weld) return surfaceSide(facet, normal, clearance);
+  if (clearance) *clearance = std::abs(normal.dot(c[0]));
+  return normal.dot(c[0]) > 0 ? 1 : 0;
 }
 
 bool facetOwns(const std::array<Vector2r, 3>& corners, const FacetWeld& weld, const Vector2r& p) {
@@ -87,34 +95,54 @@ bool facetOwns(const std::array<Vector2r, 3>& corners, const FacetWeld& weld, co
   return true;
 }
 
-void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFacet& facet, Real edgeRadius,
-                                        const RelativeMotion& motion, GeomOutput out, CurvatureModel model) {
+namespace {
+
+// n12 of a facet seen from `side`: from the body into the facet.
+Vector3r towardFacet(const PlacedFacet& facet, int side) {
+  const std::array<Vector3r, 3>& c = facet.corners;
+  const Vector3r normal = (c[1] - c[0]).cross(c[2] - c[0]).normalized();
+  return side == 1 ? normal : Vector3r(-normal);
+}
+
+// What a body on `side` of the facet can touch: the face (its plane within the panel's outline, moved in from the
+// rounded edges, keeping the contacts over the facet itself) and the roundings of the edges the facet owns that are
+// convex from that side. It points into itself: neither copied nor moved.
+class FacetSurfaces {
+ public:
+  FacetSurfaces(const PlacedFacet& facet, int side, Real edgeRadius);
+  FacetSurfaces(const FacetSurfaces&) = delete;
+  FacetSurfaces& operator=(const FacetSurfaces&) = delete;
+
+  const ContactFace& face() const { return face_; }
+  const std::optional<RoundedFeature>& strip(int edge) const { return strips_[edge]; }
+
+ private:
+  ContactFace face_;
+  std::optional<FaceOutline> outline_, ownOutline_;
+  std::array<Vector2r, 3> own_;
+  std::array<std::optional<RoundedFeature>, 3> strips_;
+};
+
+FacetSurfaces::FacetSurfaces(const PlacedFacet& facet, int side, Real edgeRadius) {
   const std::array<Vector3r, 3>& corners = facet.corners;
-  if (!hasArea(corners)) return;  // a sliver with collinear corners: no plane, nothing to push with
-  const Vector3r normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
-  // n12 points from the body (its centre is body 1's origin) into the facet.
-  const int side = facetSide(facet);
-  ContactFace face;
-  face.origin = corners[0];
-  face.normal = side == 1 ? normal : Vector3r(-normal);
-  face.tangent1 = face.normal.unitOrthogonal();
-  face.tangent2 = face.normal.cross(face.tangent1);
-  face.sheet = true;
-  if (!treeMayReach(mesh, facet, face.normal, edgeRadius)) return;
+  face_.origin = corners[0];
+  face_.normal = towardFacet(facet, side);
+  face_.tangent1 = face_.normal.unitOrthogonal();
+  face_.tangent2 = face_.normal.cross(face_.tangent1);
+  face_.sheet = true;
   const FacetWeld* weld = facet.weld;
   if (!weld) {
     const ConvexPolygon triangle = ConvexPolygon::triangle(
-        faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]), faceCoordinates(face, corners[2]));
-    const FaceOutline outline({triangle[0], triangle[1], triangle[2]});
-    face.faceOutline = &outline;
-    faceGeometry(mesh, face, motion, out, model);
+        faceCoordinates(face_, corners[0]), faceCoordinates(face_, corners[1]), faceCoordinates(face_, corners[2]));
+    outline_.emplace(std::vector<Vector2r>{triangle[0], triangle[1], triangle[2]});
+    face_.faceOutline = &*outline_;
     return;
   }
   // The rounding of the edge from a to b, convex from the body's side, toward the facets beyond it (a corner of theirs
   // off the edge; NaN for a free edge): the outward normals of both faces, or none where the edge is not convex (or
   // folds back on itself). A free edge turns as a 90-degree edge would, its second face the plane across the sheet's
   // rim: a lip of radius rho curving behind the sheet, within its outline.
-  const Vector3r outward = -face.normal;
+  const Vector3r outward = -face_.normal;
   const Vector3r inside = (corners[0] + corners[1] + corners[2]) / 3;
   auto rounding = [&](const Vector3r& a, const Vector3r& b, const Vector3r& beyond) -> std::optional<RoundedFeature> {
     if (!(edgeRadius > 0)) return std::nullopt;
@@ -134,7 +162,7 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFac
   inset.reserve(n);
   slack.reserve(n);
   for (int k = 0; k < n; ++k) {
-    outlineCorners.push_back(faceCoordinates(face, facet.outline[k]));
+    outlineCorners.push_back(faceCoordinates(face_, facet.outline[k]));
     open.push_back(!weld->outlineClosed[k][side]);
     const std::optional<RoundedFeature> strip =
         open.back() ? rounding(facet.outline[k], facet.outline[(k + 1) % n], facet.outlineBeyond[k]) : std::nullopt;
@@ -156,23 +184,52 @@ void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFac
     reverseEdges(inset);
     reverseEdges(slack);
   }
-  const FaceOutline outline(std::move(outlineCorners), std::move(open), std::move(inset), std::move(slack));
-  face.faceOutline = &outline;
+  outline_.emplace(std::move(outlineCorners), std::move(open), std::move(inset), std::move(slack));
+  face_.faceOutline = &*outline_;
   // A panel's member keeps the contacts whose c_eff it holds, and tests only the caps over itself.
-  const std::array<Vector2r, 3> own{faceCoordinates(face, corners[0]), faceCoordinates(face, corners[1]),
-                                    faceCoordinates(face, corners[2])};
-  std::optional<FaceOutline> ownOutline;
+  own_ = {faceCoordinates(face_, corners[0]), faceCoordinates(face_, corners[1]), faceCoordinates(face_, corners[2])};
   if (weld->panelSize > 1) {
-    const ConvexPolygon ownTriangle = ConvexPolygon::triangle(own[0], own[1], own[2]);  // counter-clockwise
-    ownOutline.emplace(std::vector<Vector2r>{ownTriangle[0], ownTriangle[1], ownTriangle[2]});
-    face.owns = [&own, weld](const Vector2r& p) { return facetOwns(own, *weld, p); };
-    face.owned = &*ownOutline;
+    const ConvexPolygon ownTriangle = ConvexPolygon::triangle(own_[0], own_[1], own_[2]);  // counter-clockwise
+    ownOutline_.emplace(std::vector<Vector2r>{ownTriangle[0], ownTriangle[1], ownTriangle[2]});
+    face_.owns = [this, weld](const Vector2r& p) { return facetOwns(own_, *weld, p); };
+    face_.owned = &*ownOutline_;
   }
-  faceGeometry(mesh, face, motion, out, model);
   for (int e = 0; e < 3; ++e)
     if (weld->ownsStrip[e] && !weld->edgeClosed[e][side])
-      if (const std::optional<RoundedFeature> strip = rounding(corners[e], corners[(e + 1) % 3], facet.beyond[e]))
-        featureGeometry(mesh, *strip, motion, out, model);
+      strips_[e] = rounding(corners[e], corners[(e + 1) % 3], facet.beyond[e]);
+}
+
+}  // namespace
+
+bool FacetCandidates::empty() const {
+  return face.empty() && std::all_of(strips.begin(), strips.end(), [](const auto& s) { return s.empty(); });
+}
+
+void facetCandidates(const RoundedMesh& mesh, const PlacedFacet& facet, int side, Real edgeRadius, Real margin,
+                     FacetCandidates& candidates) {
+  candidates.side = side;
+  candidates.face.clear();
+  for (std::vector<int>& strip : candidates.strips) strip.clear();
+  if (!hasArea(facet.corners)) return;
+  const FacetSurfaces surfaces(facet, side, edgeRadius);
+  faceCandidates(mesh, surfaces.face(), margin, candidates.face);
+  for (int e = 0; e < 3; ++e)
+    if (surfaces.strip(e)) featureCandidates(mesh, *surfaces.strip(e), margin, candidates.strips[e]);
+}
+
+void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFacet& facet, Real edgeRadius,
+                                        const RelativeMotion& motion, GeomOutput out, CurvatureModel model,
+                                        const FacetCandidates* candidates) {
+  if (!hasArea(facet.corners)) return;  // a sliver with collinear corners: no plane, nothing to push with
+  if (candidates && candidates->empty()) return;
+  // n12 points from the body (its centre is body 1's origin) into the facet.
+  const int side = candidates ? candidates->side : facetSide(facet);
+  if (!treeMayReach(mesh, facet, towardFacet(facet, side), edgeRadius)) return;
+  const FacetSurfaces surfaces(facet, side, edgeRadius);
+  faceGeometry(mesh, surfaces.face(), motion, out, model, candidates ? &candidates->face : nullptr);
+  for (int e = 0; e < 3; ++e)
+    if (surfaces.strip(e))
+      featureGeometry(mesh, *surfaces.strip(e), motion, out, model, candidates ? &candidates->strips[e] : nullptr);
 }
 
 }  // namespace roundedmesh

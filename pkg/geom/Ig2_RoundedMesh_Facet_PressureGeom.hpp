@@ -14,6 +14,7 @@
 // Inputs in body 1's frame: the facet placed there, and the facet's motion relative to body 1.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "pkg/geom/TrianglePlaneGeom.hpp"
@@ -21,14 +22,33 @@
 
 namespace roundedmesh {
 
+// The body's triangles that Ig2_RoundedMesh_Facet_PressureGeom may test against a facet, for the body on `side` of it:
+// its face's (faceCandidates) and each edge rounding's (featureCandidates, in the order of the facet's edges), found
+// for the facet and body where they were when these were made, with a margin: they hold every triangle the Ig2 tests
+// while the body stays on that side and no point of the body's tree moves by more than the margin relative to the
+// facet. Kept per pair from step to step (CandidateList::facet), as the triangle pairs of two bodies are.
+struct FacetCandidates {
+  int side = 0;
+  std::vector<int> face;
+  std::array<std::vector<int>, 3> strips;
+  bool empty() const;  // then the Ig2 finds nothing
+};
+
+void facetCandidates(const RoundedMesh& mesh, const PlacedFacet& facet, int side, Real edgeRadius, Real margin,
+                     FacetCandidates& candidates);
+
+// With `candidates`, made for this facet, the body on their side and a margin the motion since has not exceeded:
+// only those triangles are tested, and the Ig2 finds exactly what it finds over the whole tree.
 void Ig2_RoundedMesh_Facet_PressureGeom(const RoundedMesh& mesh, const PlacedFacet& facet, Real edgeRadius,
                                         const RelativeMotion& motion, GeomOutput out,
-                                        CurvatureModel model = CurvatureModel::Mean);
+                                        CurvatureModel model = CurvatureModel::Mean,
+                                        const FacetCandidates* candidates = nullptr);
 
 // The side of the facet (FacetWeld's side 0: that of the normal (c1 - c0) x (c2 - c0), 1 the other) the body whose
 // centre is the frame's origin is on: its plane's side, or for a welded facet the surface's, which outside a ridge
-// (above a lifter's apex, past the plane's reach) is the other.
-int facetSide(const PlacedFacet& facet);
+// (above a lifter's apex, past the plane's reach) is the other. With `clearance`, also how far [m] the centre may move
+// relative to the facet before its side can change: its distance to the nearest plane the side is decided by.
+int facetSide(const PlacedFacet& facet, Real* clearance = nullptr);
 
 // Whether point p of the facet's plane, in the coordinates `inPlane` gives, belongs to the facet among its panel's
 // members: inside it, or on an edge or at a corner it owns (FacetWeld). Within a billionth of the facet's size of an

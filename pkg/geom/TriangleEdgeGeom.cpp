@@ -141,23 +141,54 @@ GeomTest triangleFeatureGeom(const RoundedMesh& mesh, int triangle, const Rounde
 
 Real featureReach(const RoundedMesh& mesh, Real radius) { return radius + kSwallowed * mesh.sphereBoundRadius(); }
 
-void featureGeometry(const RoundedMesh& mesh, const RoundedFeature& feature, const RelativeMotion& motion,
-                     GeomOutput out, CurvatureModel model) {
-  // A cap can touch the cylinder only if its box comes within rho of the axis segment (S is clipped to the segment
-  // along the axis), or has swallowed it (triangleFeatureGeom): the box's centre within that reach and half its
-  // diagonal of the segment, a box or node of the tree being tested by the same bound.
-  const Vector3r along = feature.end - feature.start;
-  const Real lengthSq = along.squaredNorm();
-  const Real capReach = featureReach(mesh, feature.radius);
-  auto nearSegment = [&](const AlignedBox3r& box) {
+namespace {
+
+// Whether a box of the body's tree may hold a cap that touches the feature, or may once the feature has moved relative
+// to the body so that no point of the box moves by more than `margin` [m]: a cap can touch the cylinder only if its
+// box comes within rho of the axis segment (S is clipped to the segment along the axis), or has swallowed it
+// (triangleFeatureGeom): the box's centre within that reach (plus the margin) and half its diagonal of the segment.
+class FeatureReach {
+ public:
+  FeatureReach(const RoundedMesh& mesh, const RoundedFeature& feature, Real margin)
+      : start_(feature.start), along_(feature.end - feature.start), lengthSq_(along_.squaredNorm()),
+        capReach_(featureReach(mesh, feature.radius) + margin) {}
+
+  bool operator()(const AlignedBox3r& box) const { return within(box, 0.5 * box.sizes().norm()); }
+
+  // A node of the tree passes where any box it holds may: such a box's centre lies d from the node's and half its
+  // diagonal is r, with d + r <= sqrt(2) times the node's half-diagonal h (|d_i| + r_i <= h_i on each axis).
+  bool node(const AlignedBox3r& box) const { return within(box, std::sqrt(Real(2)) * 0.5 * box.sizes().norm()); }
+
+ private:
+  bool within(const AlignedBox3r& box, Real radius) const {
     const Vector3r centre = box.center();
-    const Real t = lengthSq > 0 ? std::clamp((centre - feature.start).dot(along) / lengthSq, Real(0), Real(1)) : 0;
-    const Real reach = capReach + 0.5 * box.sizes().norm();
-    return (centre - feature.start - t * along).squaredNorm() <= reach * reach;
-  };
+    const Real t = lengthSq_ > 0 ? std::clamp((centre - start_).dot(along_) / lengthSq_, Real(0), Real(1)) : 0;
+    const Real reach = capReach_ + radius;
+    return (centre - start_ - t * along_).squaredNorm() <= reach * reach;
+  }
+
+  Vector3r start_, along_;
+  Real lengthSq_, capReach_;
+};
+
+}  // namespace
+
+void featureCandidates(const RoundedMesh& mesh, const RoundedFeature& feature, Real margin,
+                       std::vector<int>& triangles) {
+  triangles.clear();
+  const FeatureReach near(mesh, feature, margin);
+  mesh.tree().query([&](const AlignedBox3r& box) { return near.node(box); }, near,
+                    [&](int t) { triangles.push_back(t); });
+}
+
+void featureGeometry(const RoundedMesh& mesh, const RoundedFeature& feature, const RelativeMotion& motion,
+                     GeomOutput out, CurvatureModel model, const std::vector<int>* candidates) {
+  const FeatureReach near(mesh, feature, 0);
   PressureGeom geom;
-  mesh.tree().query(nearSegment,
-                    [&](int t) { out.add(triangleFeatureGeom(mesh, t, feature, motion, geom, model), geom); });
+  auto test = [&](int t) { out.add(triangleFeatureGeom(mesh, t, feature, motion, geom, model), geom); };
+  if (!candidates) return mesh.tree().query([&](const AlignedBox3r& box) { return near.node(box); }, near, test);
+  for (int t : *candidates)
+    if (near(mesh.tree().triangleBox(t))) test(t);
 }
 
 }  // namespace roundedmesh

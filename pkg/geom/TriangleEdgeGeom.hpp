@@ -39,8 +39,16 @@ GeomTest triangleFeatureGeom(const RoundedMesh& mesh, int triangle, const Rounde
 // swallowed axis may lie (triangleFeatureGeom).
 Real featureReach(const RoundedMesh& mesh, Real radius);
 
-// triangleFeatureGeom for every triangle whose cap box comes within featureReach of the feature's axis segment.
+// triangleFeatureGeom for every triangle whose cap box comes within featureReach of the feature's axis segment; with
+// `candidates`, for those of them (featureCandidates), in their order.
 void featureGeometry(const RoundedMesh& mesh, const RoundedFeature& feature, const RelativeMotion& motion,
-                     GeomOutput out, CurvatureModel model = CurvatureModel::Mean);
+                     GeomOutput out, CurvatureModel model = CurvatureModel::Mean,
+                     const std::vector<int>* candidates = nullptr);
+
+// The triangles whose cap boxes come within featureReach + margin [m] of the feature's axis segment, in the order of
+// the tree's query: while no point of the body's tree moves by more than the margin relative to the feature, they
+// hold every triangle featureGeometry tests.
+void featureCandidates(const RoundedMesh& mesh, const RoundedFeature& feature, Real margin,
+                       std::vector<int>& triangles);
 
 }  // namespace roundedmesh

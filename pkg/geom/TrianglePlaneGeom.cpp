@@ -95,14 +95,6 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
 
 namespace {
 
-// An edge line of a face's region in body 1's frame: a box reaches inside it where its farthest corner along `inward`
-// does, inward . centre + spread . half-sizes >= offset (spread = |inward| componentwise).
-struct RegionSide {
-  Vector3r inward, spread;
-  Real offset;
-};
-constexpr int kRegionSides = 8;
-
 // How far p, inside a convex outline, lies from its nearest open edge, with the edge's slack (infinity if none is
 // open).
 Real distanceToOpenEdge(const FaceOutline& outline, const Vector2r& p) {
@@ -119,12 +111,11 @@ Real distanceToOpenEdge(const FaceOutline& outline, const Vector2r& p) {
 
 }  // namespace
 
-void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
-                  CurvatureModel model) {
+FaceReach::FaceReach(const RoundedMesh& mesh, const ContactFace& face, Real margin)
+    : normal_(face.normal), origin_(face.origin), margin_(margin), nodeSlack_(1e-9 * mesh.sphereBoundRadius()) {
   // A cap that reaches the plane has part of its box on the partner's side. Behind a sheet with an open edge, a cap
   // deeper than the outline is wide (plus the edges' slack) is farther behind it than from any open edge, and the
   // sheet rule would reject it: it is not tested.
-  Real deepest = std::numeric_limits<Real>::infinity();
   if (face.sheet && face.faceOutline) {
     const FaceOutline& outline = *face.faceOutline;
     if (outline.open.empty() || std::find(outline.open.begin(), outline.open.end(), true) != outline.open.end()) {
@@ -132,51 +123,46 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
       for (const Vector2r& x : outline.corners)
         for (const Vector2r& y : outline.corners) width = std::max(width, (x - y).norm());
       for (Real s : outline.slack) slack = std::max(slack, s);
-      deepest = width + slack;
+      deepest_ = width + slack;
     }
   }
-  auto reachesPlane = [&](const AlignedBox3r& box) {
-    const Real behind = face.normal.dot(box.center() - face.origin);
-    const Real half = 0.5 * face.normal.cwiseAbs().dot(box.sizes());
-    return behind > -half && behind - half <= deepest;
-  };
   // A cap whose projection meets the outline (or the part of it whose contacts the face keeps) lies in the prism over
   // it, as deep on either side as the body is wide: a box (a node's, or a triangle's) that holds such a cap meets that
   // prism's AABB, and reaches inside each edge's line, its farthest corner along the line's inward normal (in the
   // plane) on the inner side. A contact's c_eff lies in S, the projection of a point of its triangle, and a panel's
   // member keeps it up to 1e-9 of its size outside its own triangle (facetOwns): the lines are moved out by 1e-6 of the
   // region's size for that and for round-off.
-  AlignedBox3r prism(Vector3r::Constant(-std::numeric_limits<Real>::infinity()),
-                     Vector3r::Constant(std::numeric_limits<Real>::infinity()));
   const FaceOutline* region = face.owned ? face.owned : face.faceOutline;
-  std::array<RegionSide, kRegionSides> sides;
-  int sideCount = 0;
-  if (region) {
-    prism.setEmpty();
-    const Real reach = 2 * mesh.sphereBoundRadius();
-    Eigen::AlignedBox<Real, 2> extent;
-    for (const Vector2r& x : region->corners) {
-      const Vector3r corner = face.origin + x.x() * face.tangent1 + x.y() * face.tangent2;
-      prism.extend(corner + reach * face.normal).extend(corner - reach * face.normal);
-      extent.extend(x);
-    }
-    const Real margin = 1e-6 * extent.sizes().norm();
-    // A region of more edges is bounded by its first kRegionSides.
-    for (int i = 0; i < static_cast<int>(region->lines.size()) && sideCount < kRegionSides; ++i) {
-      const FaceOutline::Line& line = region->lines[i];
-      const Vector3r inward = line.inward.x() * face.tangent1 + line.inward.y() * face.tangent2;
-      sides[sideCount++] = {inward, inward.cwiseAbs(), line.offset + inward.dot(face.origin) - margin};
-    }
+  if (!region) return;
+  const Real reach = 2 * mesh.sphereBoundRadius();
+  prism_.setEmpty();
+  Eigen::AlignedBox<Real, 2> extent;
+  for (const Vector2r& x : region->corners) {
+    const Vector3r corner = face.origin + x.x() * face.tangent1 + x.y() * face.tangent2;
+    prism_.extend(corner + reach * face.normal).extend(corner - reach * face.normal);
+    extent.extend(x);
   }
-  auto overRegion = [&](const AlignedBox3r& box) {
-    const Vector3r centre = box.center(), half = 0.5 * box.sizes();
-    for (int i = 0; i < sideCount; ++i)
-      if (sides[i].inward.dot(centre) + sides[i].spread.dot(half) < sides[i].offset) return false;
-    return true;
-  };
+  const Real lineMargin = 1e-6 * extent.sizes().norm();
+  // A region of more edges is bounded by its first kRegionSides.
+  for (int i = 0; i < static_cast<int>(region->lines.size()) && sideCount_ < kRegionSides; ++i) {
+    const FaceOutline::Line& line = region->lines[i];
+    const Vector3r inward = line.inward.x() * face.tangent1 + line.inward.y() * face.tangent2;
+    sides_[sideCount_++] = {inward, inward.cwiseAbs(), line.offset + inward.dot(face.origin) - lineMargin - margin};
+  }
+}
+
+void faceCandidates(const RoundedMesh& mesh, const ContactFace& face, Real margin, std::vector<int>& triangles) {
+  triangles.clear();
+  const FaceReach reach(mesh, face, margin);
+  mesh.tree().query([&](const AlignedBox3r& box) { return reach.node(box); }, reach,
+                    [&](int t) { triangles.push_back(t); });
+}
+
+void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
+                  CurvatureModel model, const std::vector<int>* candidates) {
+  const FaceReach reachable(mesh, face, 0);
   PressureGeom geom;
-  auto reachable = [&](const AlignedBox3r& box) { return reachesPlane(box) && box.intersects(prism) && overRegion(box); };
-  mesh.tree().query(reachable, [&](int t) {
+  auto test = [&](int t) {
     GeomTest result = trianglePlaneGeom(mesh, t, face, motion, geom, model);
     if (result && face.owns && !face.owns(faceCoordinates(face, planePoint(geom, geom.effectivePoint)))) return;
     if (result && face.sheet) {
@@ -192,7 +178,11 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
         result = {Rejection::ThroughBody};
     }
     out.add(result, geom);
-  });
+  };
+  if (!candidates)
+    return mesh.tree().query([&](const AlignedBox3r& box) { return reachable.node(box); }, reachable, test);
+  for (int t : *candidates)
+    if (reachable(mesh.tree().triangleBox(t))) test(t);
 }
 
 }  // namespace roundedmesh

@@ -10,7 +10,9 @@
 // the pressure of Eq. 9 act on the triangle.
 #pragma once
 
+#include <array>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "pkg/geom/PressureGeom.hpp"
@@ -77,7 +79,58 @@ GeomTest trianglePlaneGeom(const RoundedMesh& mesh, int triangle, const ContactF
 // sheet sooner than pushing it back through. A seam where the surface goes on toward the body is no such edge, and a
 // cap whose c_eff lies farther from every open edge than the body is wide cannot have come round one: its path is not
 // asked for (a body pressed deep into a large Facet, or into a drum's wall, meets it as a Wall).
+// With `candidates`, only those of the candidates that the culling passes, in their order: the same contacts as the
+// tree's query when the candidates hold every triangle it visits, in the tree's order (faceCandidates).
 void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
-                  CurvatureModel model = CurvatureModel::Mean);
+                  CurvatureModel model = CurvatureModel::Mean, const std::vector<int>* candidates = nullptr);
+
+// faceGeometry's culling: whether a triangle's box may hold a cap it tests. With a margin [m], whether it may once the
+// face has moved relative to the body so that no point of the box moves by more than the margin: each test's plane or
+// line is moved out by it (a box meets a half-space exactly where its farthest corner along the normal does, so that
+// test stays exact in any frame), and the prism's box, taken in the body's frame, is left out (it turns with the face).
+class FaceReach {
+ public:
+  FaceReach(const RoundedMesh& mesh, const ContactFace& face, Real margin);
+  bool operator()(const AlignedBox3r& box) const { return reaches(box, 0); }
+  // A node of the tree passes where a box it holds may: each test is exact for a box, up to round-off, which a
+  // billionth of the body's size covers.
+  bool node(const AlignedBox3r& box) const { return reaches(box, nodeSlack_); }
+
+ private:
+  bool reaches(const AlignedBox3r& box, Real slack) const;
+
+  static constexpr int kRegionSides = 8;
+  // An edge line of the face's region in body 1's frame: a box reaches inside it where its farthest corner along
+  // `inward` does, inward . centre + spread . half-sizes >= offset (spread = |inward| componentwise).
+  struct RegionSide {
+    Vector3r inward, spread;
+    Real offset;
+  };
+  Vector3r normal_, origin_;
+  Real margin_, nodeSlack_;
+  Real deepest_ = std::numeric_limits<Real>::infinity();  // how far behind the plane a kept cap's box can lie
+  AlignedBox3r prism_{Vector3r::Constant(-std::numeric_limits<Real>::infinity()),
+                      Vector3r::Constant(std::numeric_limits<Real>::infinity())};
+  std::array<RegionSide, kRegionSides> sides_;
+  int sideCount_ = 0;
+};
+
+inline bool FaceReach::reaches(const AlignedBox3r& box, Real slack) const {
+  const Vector3r centre = box.center(), half = 0.5 * box.sizes();
+  const Real behind = normal_.dot(centre - origin_);
+  const Real across = normal_.cwiseAbs().dot(half);
+  const Real out = margin_ + slack;
+  if (!(behind > -across - out && behind - across <= deepest_ + out)) return false;
+  // The prism's AABB is taken in the body's frame: it turns with the face, and is left out of a margin's test.
+  if (margin_ == 0 && !box.intersects(prism_)) return false;
+  for (int i = 0; i < sideCount_; ++i)
+    if (sides_[i].inward.dot(centre) + sides_[i].spread.dot(half) < sides_[i].offset - slack) return false;
+  return true;
+}
+
+// The triangles of the body whose boxes pass FaceReach with `margin` [m], in the order of the tree's query: while no
+// point of the body's tree moves by more than the margin relative to the face, faceGeometry over them finds what it
+// finds over the whole tree.
+void faceCandidates(const RoundedMesh& mesh, const ContactFace& face, Real margin, std::vector<int>& triangles);
 
 }  // namespace roundedmesh

@@ -36,9 +36,14 @@ class TriangleTree {
   const std::vector<AlignedBox3r>& triangleBoxes() const { return boxes_; }
 
   // Calls visit(t) for every triangle t whose box passes `test` (a predicate on an AlignedBox3r that must hold
-  // for every box containing one that passes: it is applied to nodes before their triangles).
+  // for every box containing one that passes: it is applied to nodes before their triangles), in the tree's order:
+  // one order of all its triangles, whichever the test passes.
   template <class BoxTest, class Visit>
   void query(const BoxTest& test, const Visit& visit) const;
+  // The same, with the nodes tested by `nodeTest`, which must pass every node that holds a triangle whose box passes
+  // `test`.
+  template <class NodeTest, class BoxTest, class Visit>
+  void query(const NodeTest& nodeTest, const BoxTest& test, const Visit& visit) const;
 
   // Calls visit(s, t) for every triangle s of `a` and t of `b` whose boxes come closer than `margin` on every
   // axis when b's frame is placed in a's by x_a = rotation * x_b + translation (b's boxes taken as the
@@ -75,13 +80,18 @@ inline AlignedBox3r transformedBox(const AlignedBox3r& box, const Matrix3r& rota
 
 template <class BoxTest, class Visit>
 void TriangleTree::query(const BoxTest& test, const Visit& visit) const {
+  query(test, test, visit);
+}
+
+template <class NodeTest, class BoxTest, class Visit>
+void TriangleTree::query(const NodeTest& nodeTest, const BoxTest& test, const Visit& visit) const {
   if (nodes_.empty()) return;
   std::array<int, kStackSize> stack;
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    if (!test(node.box)) continue;
+    if (!nodeTest(node.box)) continue;
     if (node.count > 0) {
       for (int i = node.first; i < node.first + node.count; ++i)
         if (test(boxes_[order_[i]])) visit(order_[i]);

@@ -59,7 +59,8 @@ def statistics():
       sliding_contacts         triangle and sphere contacts sliding: all of a pair's whose spring slides (under the
                                viscous law, each by Eq. 21)
       neighbour_rebuilds       whether the broad phase's neighbour list was rebuilt (0 or 1)
-      candidate_rebuilds       pairs whose candidate triangle pairs were rebuilt (from their near list)
+      candidate_rebuilds       pairs whose candidate triangle pairs were rebuilt (from their near list), or against a
+                               Facet, whose candidate triangles were (doc/physics.md, "Lists kept between steps")
       near_rebuilds            pairs whose near list was searched again in the triangle trees
       near_pairs_scanned       triangle pairs of the near lists scanned to rebuild the candidate lists
       broad_phase_ms, pairs_ms, reduction_ms   wall time of each stage of the C++ step

@@ -112,7 +112,7 @@ TEST(ContactStep, AProcessComputesThePairsOfItsOwnBodiesOnly) {
     scene.data.bodyStates[1].velocity = Vector3r(0, 0, -0.1);  // the fastest, where it is reported
     const StepReport report = contactStep(scene.model, scene.data);
     EXPECT_TRUE(report.kept());
-    return std::make_tuple(scene.data.pairs.size(), report, scene.data);
+    return std::make_tuple(scene.data.pairs.size(), report, std::move(scene.data));
   };
   const auto [wholePairs, whole, wholeData] = stepAs(Residence::Own, Residence::Own);  // one process
   ASSERT_EQ(wholePairs, 1u);

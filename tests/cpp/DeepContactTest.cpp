@@ -171,7 +171,7 @@ std::pair<ContactModel, ContactData> twoBears(const RecordedScene& scene) {
   model.bodies = {scene.model.bodies[0], scene.model.bodies[1]};
   ContactData data;
   data.resize(model);
-  return {model, data};
+  return {model, std::move(data)};
 }
 
 // In the recorded S1 packing, Appendix B alone accepts triangle pairs of bears 0 and 1 (whose real contacts are
