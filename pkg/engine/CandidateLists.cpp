@@ -21,8 +21,8 @@ Real treeRadius(const RoundedMesh& mesh) {
   return (root.center().cwiseAbs() + 0.5 * root.sizes()).norm();
 }
 
-// A list is kept while the motion bound stays this fraction of the body's tree radius inside its skin: the culling's
-// tests round off by about 1e-16 of the distances they compare.
+// A Facet's list is kept while the motion bound stays this fraction of the body's tree radius inside its skin, and the
+// centre's motion inside its side's clearance: the tests round off by about 1e-16 of the distances they compare.
 constexpr Real kSkinRoundOff = 1e-9;
 
 }  // namespace

@@ -26,7 +26,8 @@ namespace roundedmesh {
 // CPU seconds of the stages inside the pairs, summed over the pairs (and so over threads), measured under
 // EngineOptions' timing = 'stages' (else 0).
 struct PairStageTimes {
-  Real lists = 0;        // candidate lists brought up to date (updateCandidates), near searches included
+  Real lists = 0;        // candidate lists brought up to date (updateCandidates, updateFacetCandidates), near
+                         // searches included
   Real nearSearch = 0;   // of which the near lists searched in the triangle trees (nearTrianglePairs)
   Real narrowPhase = 0;  // Ig2 over the candidates, or against a partner
   Real law = 0;          // Law2, node forces and friction (pairLoad)

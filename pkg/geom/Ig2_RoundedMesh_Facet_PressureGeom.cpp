@@ -18,13 +18,15 @@ constexpr Real kFoldedBack = 1e-3;
 // (n12 pointing from the body into the facet) and reach inside each edge line of its region, which lies in the
 // facet's own triangle (a panel's member keeps only the contacts over it; a facet alone, or alone in its panel, clips
 // S to its outline, the triangle moved in), with a margin of 1e-6 of the region's size (here of the triangle's
-// perimeter, which is larger). A strip's query tests the boxes within featureReach of its axis. Most facets whose
-// bounds a body's bound meets lie beside it or beyond its reach.
+// perimeter, which is larger). A strip's query tests the boxes within featureReach of its axis, which lies at most
+// rho sqrt(2 / kFoldedBack) from the edge: the root passes where a box it holds may (kNestedBallFactor). Most facets
+// whose bounds a body's bound meets lie beside it or beyond its reach.
 bool treeMayReach(const RoundedMesh& mesh, const PlacedFacet& facet, const Vector3r& n12, Real edgeRadius) {
   const AlignedBox3r& root = mesh.tree().nodes().front().box;
   const Vector3r centre = root.center(), half = 0.5 * root.sizes();
   const std::array<Vector3r, 3>& corners = facet.corners;
-  const Real stripReach = featureReach(mesh, edgeRadius) + std::sqrt(2 / kFoldedBack) * edgeRadius + half.norm();
+  const Real stripReach =
+      featureReach(mesh, edgeRadius) + std::sqrt(2 / kFoldedBack) * edgeRadius + kNestedBallFactor * half.norm();
   Real perimeter = 0;
   for (int e = 0; e < 3; ++e) {
     const Vector3r &a = corners[e], &b = corners[(e + 1) % 3];
@@ -41,6 +43,9 @@ bool treeMayReach(const RoundedMesh& mesh, const PlacedFacet& facet, const Vecto
   }
   return true;
 }
+
+// The facet's unit normal, (c1 - c0) x (c2 - c0) normalised: its side 0.
+Vector3r unitNormal(const std::array<Vector3r, 3>& c) { return (c[1] - c[0]).cross(c[2] - c[0]).normalized(); }
 
 // The side of the surface the body's centre (the origin) is on, seen from this facet: the side of its plane, unless
 // the centre lies behind the plane past an edge that is convex from the other side, and in front of the facets beyond
@@ -74,11 +79,10 @@ int surfaceSide(const PlacedFacet& facet, const Vector3r& normal, Real* clearanc
 }  // namespace
 
 int facetSide(const PlacedFacet& facet, Real* clearance) {
-  const std::array<Vector3r, 3>& c = facet.corners;
-  const Vector3r normal = (c[1] - c[0]).cross(c[2] - c[0]).normalized();
+  const Vector3r normal = unitNormal(facet.corners);
   if (facet.weld) return surfaceSide(facet, normal, clearance);
-  if (clearance) *clearance = std::abs(normal.dot(c[0]));
-  return normal.dot(c[0]) > 0 ? 1 : 0;
+  if (clearance) *clearance = std::abs(normal.dot(facet.corners[0]));
+  return normal.dot(facet.corners[0]) > 0 ? 1 : 0;
 }
 
 bool facetOwns(const std::array<Vector2r, 3>& corners, const FacetWeld& weld, const Vector2r& p) {
@@ -99,8 +103,7 @@ namespace {
 
 // n12 of a facet seen from `side`: from the body into the facet.
 Vector3r towardFacet(const PlacedFacet& facet, int side) {
-  const std::array<Vector3r, 3>& c = facet.corners;
-  const Vector3r normal = (c[1] - c[0]).cross(c[2] - c[0]).normalized();
+  const Vector3r normal = unitNormal(facet.corners);
   return side == 1 ? normal : Vector3r(-normal);
 }
 

@@ -151,13 +151,15 @@ class FeatureReach {
  public:
   FeatureReach(const RoundedMesh& mesh, const RoundedFeature& feature, Real margin)
       : start_(feature.start), along_(feature.end - feature.start), lengthSq_(along_.squaredNorm()),
-        capReach_(featureReach(mesh, feature.radius) + margin) {}
+        capReach_(featureReach(mesh, feature.radius) + margin), nodeSlack_(1e-9 * mesh.sphereBoundRadius()) {}
 
   bool operator()(const AlignedBox3r& box) const { return within(box, 0.5 * box.sizes().norm()); }
 
-  // A node of the tree passes where any box it holds may: such a box's centre lies d from the node's and half its
-  // diagonal is r, with d + r <= sqrt(2) times the node's half-diagonal h (|d_i| + r_i <= h_i on each axis).
-  bool node(const AlignedBox3r& box) const { return within(box, std::sqrt(Real(2)) * 0.5 * box.sizes().norm()); }
+  // A node of the tree passes where any box it holds may (kNestedBallFactor), with a billionth of the body's size for
+  // round-off.
+  bool node(const AlignedBox3r& box) const {
+    return within(box, kNestedBallFactor * 0.5 * box.sizes().norm() + nodeSlack_);
+  }
 
  private:
   bool within(const AlignedBox3r& box, Real radius) const {
@@ -168,7 +170,7 @@ class FeatureReach {
   }
 
   Vector3r start_, along_;
-  Real lengthSq_, capReach_;
+  Real lengthSq_, capReach_, nodeSlack_;
 };
 
 }  // namespace
@@ -176,19 +178,15 @@ class FeatureReach {
 void featureCandidates(const RoundedMesh& mesh, const RoundedFeature& feature, Real margin,
                        std::vector<int>& triangles) {
   triangles.clear();
-  const FeatureReach near(mesh, feature, margin);
-  mesh.tree().query([&](const AlignedBox3r& box) { return near.node(box); }, near,
-                    [&](int t) { triangles.push_back(t); });
+  mesh.tree().visitReachable(FeatureReach(mesh, feature, margin), [&](int t) { triangles.push_back(t); });
 }
 
 void featureGeometry(const RoundedMesh& mesh, const RoundedFeature& feature, const RelativeMotion& motion,
                      GeomOutput out, CurvatureModel model, const std::vector<int>* candidates) {
-  const FeatureReach near(mesh, feature, 0);
   PressureGeom geom;
-  auto test = [&](int t) { out.add(triangleFeatureGeom(mesh, t, feature, motion, geom, model), geom); };
-  if (!candidates) return mesh.tree().query([&](const AlignedBox3r& box) { return near.node(box); }, near, test);
-  for (int t : *candidates)
-    if (near(mesh.tree().triangleBox(t))) test(t);
+  mesh.tree().visitReachable(
+      FeatureReach(mesh, feature, 0),
+      [&](int t) { out.add(triangleFeatureGeom(mesh, t, feature, motion, geom, model), geom); }, candidates);
 }
 
 }  // namespace roundedmesh

@@ -142,7 +142,15 @@ FaceReach::FaceReach(const RoundedMesh& mesh, const ContactFace& face, Real marg
     prism_.extend(corner + reach * face.normal).extend(corner - reach * face.normal);
     extent.extend(x);
   }
-  const Real lineMargin = 1e-6 * extent.sizes().norm();
+  // The extent's diagonal depends on the in-plane axes, which turn with the face: a margin's test takes the most it can
+  // be, sqrt(2) times the region's diameter.
+  Real lineMargin = 1e-6 * extent.sizes().norm();
+  if (margin > 0) {
+    Real diameter = 0;
+    for (const Vector2r& x : region->corners)
+      for (const Vector2r& y : region->corners) diameter = std::max(diameter, (x - y).norm());
+    lineMargin = 1e-6 * std::sqrt(Real(2)) * diameter;
+  }
   // A region of more edges is bounded by its first kRegionSides.
   for (int i = 0; i < static_cast<int>(region->lines.size()) && sideCount_ < kRegionSides; ++i) {
     const FaceOutline::Line& line = region->lines[i];
@@ -153,9 +161,7 @@ FaceReach::FaceReach(const RoundedMesh& mesh, const ContactFace& face, Real marg
 
 void faceCandidates(const RoundedMesh& mesh, const ContactFace& face, Real margin, std::vector<int>& triangles) {
   triangles.clear();
-  const FaceReach reach(mesh, face, margin);
-  mesh.tree().query([&](const AlignedBox3r& box) { return reach.node(box); }, reach,
-                    [&](int t) { triangles.push_back(t); });
+  mesh.tree().visitReachable(FaceReach(mesh, face, margin), [&](int t) { triangles.push_back(t); });
 }
 
 void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const RelativeMotion& motion, GeomOutput out,
@@ -179,10 +185,7 @@ void faceGeometry(const RoundedMesh& mesh, const ContactFace& face, const Relati
     }
     out.add(result, geom);
   };
-  if (!candidates)
-    return mesh.tree().query([&](const AlignedBox3r& box) { return reachable.node(box); }, reachable, test);
-  for (int t : *candidates)
-    if (reachable(mesh.tree().triangleBox(t))) test(t);
+  mesh.tree().visitReachable(reachable, test, candidates);
 }
 
 }  // namespace roundedmesh

@@ -44,6 +44,11 @@ class TriangleTree {
   // `test`.
   template <class NodeTest, class BoxTest, class Visit>
   void query(const NodeTest& nodeTest, const BoxTest& test, const Visit& visit) const;
+  // Calls visit(t) for every triangle t whose box passes `reach` (reach(box) for a triangle's box, reach.node(box) for
+  // a node's, which passes every node that holds a triangle reach passes), in the tree's order: from `candidates`
+  // alone where given, which must hold every such triangle in the tree's order, else from the whole tree.
+  template <class Reach, class Visit>
+  void visitReachable(const Reach& reach, const Visit& visit, const std::vector<int>* candidates = nullptr) const;
 
   // Calls visit(s, t) for every triangle s of `a` and t of `b` whose boxes come closer than `margin` on every
   // axis when b's frame is placed in a's by x_a = rotation * x_b + translation (b's boxes taken as the
@@ -61,6 +66,11 @@ class TriangleTree {
   std::vector<int> order_;  // triangle indices, grouped by leaf
   std::vector<Node> nodes_;
 };
+
+// A box inside another: its centre's distance from the other's centre plus its own half-diagonal is at most this
+// times the other's half-diagonal (|d_i| + r_i <= h_i on each axis, and a + b <= sqrt(2 (a^2 + b^2))). So a test on a
+// box's circumscribed ball passes every node that holds a box passing it when the node's ball is this much larger.
+constexpr Real kNestedBallFactor = 1.4142135623730951;  // sqrt(2)
 
 // AlignedBox3r::intersects with its six comparisons joined without branches: one branch on the outcome, where the
 // traversal of a tree would mispredict several.
@@ -100,6 +110,16 @@ void TriangleTree::query(const NodeTest& nodeTest, const BoxTest& test, const Vi
       stack[top++] = node.first + 1;
     }
   }
+}
+
+template <class Reach, class Visit>
+void TriangleTree::visitReachable(const Reach& reach, const Visit& visit, const std::vector<int>* candidates) const {
+  if (!candidates) {
+    query([&](const AlignedBox3r& box) { return reach.node(box); }, reach, visit);
+    return;
+  }
+  for (int t : *candidates)
+    if (reach(boxes_[t])) visit(t);
 }
 
 template <class Visit>

@@ -67,7 +67,8 @@ def statistics():
       lists_cpu_ms, near_search_cpu_ms, narrow_phase_cpu_ms, law_cpu_ms, core_cpu_ms   with rm.engine(timing='stages')
                                (else 0): CPU time inside the pairs stage, summed over its threads: the candidate
                                lists brought up to date (the near searches in the triangle trees included, and also
-                               given alone), the narrow phase (Ig2), the law with node forces and friction, the core
+                               given alone; a Facet's candidate triangles too), the narrow phase (Ig2), the law with
+                               node forces and friction, the core
       read_ms, write_ms        wall time of reading the states from YADE (and the scene's springs, when it did not
                                write them itself) and of adding the forces (and writing the springs) to it
       deepest_pair_overlap     the overlap [m] of the pair that overlaps most for its size (contacts()['depth'])

@@ -113,16 +113,24 @@ TEST(PartnerCulling, ATurnedTreeMeetsTheSameContacts) {
 }
 
 
-// The floor and plate's facets welded, as a scene's partners at rest in the world's frame.
-ContactModel weldedFloorWithPlate(const RoundedBody& body, Real L) {
+// The floor and plate, with a ridge of four facets on the floor beside the plate (its apex 0.4 L high at x = 1.5 L,
+// its slopes reaching the floor at x = L and 2 L), welded, as a scene's partners at rest in the world's frame. The
+// ridge's apex is a fold, convex from above: a body beyond it is on its far face's other side (facetSide).
+ContactModel weldedFloorPlateAndRidge(const RoundedBody& body, Real L) {
+  std::vector<Corners> facets = floorWithPlate(L);
+  const Vector3r a(L, -2 * L, 0), b(1.5 * L, -2 * L, 0.4 * L), c(2 * L, -2 * L, 0), y(0, 4 * L, 0);
+  for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, c}}) {
+    facets.push_back({from, to, to + y});
+    facets.push_back({from, to + y, from + y});
+  }
   ContactModel model;
   model.bodies.push_back(body);
-  model.partners = test::facetPartners(floorWithPlate(L), kFloor);
+  model.partners = test::facetPartners(facets, kFloor);
   weldFacetPartners(model, std::vector<BodyState>(model.partners.size(), at(Vector3r::Zero())));
   return model;
 }
 
-// A welded facet of `model` placed in the frame of a body in `state`.
+// A welded facet of `model`, at rest in the world's frame, placed in the frame of a body in `state`.
 PlacedFacet placedIn(const ContactModel& model, int partner, const BodyState& state) {
   const Matrix3r R_BW = state.orientation.toRotationMatrix().transpose();
   return placeFacet(std::get<Facet>(model.partners[partner].shape), R_BW, -(R_BW * state.position));
@@ -178,7 +186,7 @@ TEST(PartnerCulling, TheQueriesVisitEveryTriangleWhoseBoxPasses) {
   const Real bound = mesh.sphereBoundRadius();
   std::mt19937 random(5);
   std::uniform_real_distribution<Real> uniform(-1, 1);
-  auto near = [&] { return Vector3r(uniform(random), uniform(random), uniform(random)) * 1.2 * bound; };
+  auto near = [&]() -> Vector3r { return Vector3r(uniform(random), uniform(random), uniform(random)) * 1.2 * bound; };
   const TriangleTree& tree = mesh.tree();
   long facesVisited = 0, stripsVisited = 0;
   for (int trial = 0; trial < 300; ++trial) {
@@ -221,28 +229,30 @@ TEST(PartnerCulling, TheQueriesVisitEveryTriangleWhoseBoxPasses) {
   EXPECT_GT(stripsVisited, 300 * 10);
 }
 
-// Kept candidates lose nothing. S1's bear about the floor and plate of welded facets, in 300 random poses within a
-// tenth of its size of the facets (touching them in many), its candidates against each facet made with a margin of 0.02
-// of its size; then moved and turned at random so that no point of its tree's root box moves by more than the margin,
-// on the same side of the facet: the Ig2 over the candidates finds the same contacts as over the whole tree, bit for
-// bit, in the same order, and tests as many triangles with the same outcomes; a centre moved by less than its
-// clearance (facetSide) stays on its side. Moved toward the floor by three margins instead, the candidates miss
-// contacts (the test can fail).
+// Kept candidates lose nothing. S1's bear about the floor, plate and ridge of welded facets, in 300 random poses
+// (about the plate's top, the ridge's apex, or on the floor where the plate cuts into it; touching them in many), its
+// candidates against each facet made with a margin of 0.02 of its size; then moved and turned at random so that no
+// point of its tree's root box moves by more than the margin, on the same side of the facet: the Ig2 over the
+// candidates finds the same contacts as over the whole tree, bit for bit, in the same order, and tests as many
+// triangles with the same outcomes; a centre moved by less than its clearance (facetSide) stays on its side. Moved
+// toward the floor by three margins instead, the candidates miss contacts (the test can fail).
 TEST(PartnerCulling, KeptCandidatesFindWhatTheWholeTreeFinds) {
   const RoundedBody bear = loadRecordedScene().model.bodies[0];
   const RoundedMesh& mesh = *bear.mesh;
   const Real bound = mesh.sphereBoundRadius();
-  const ContactModel model = weldedFloorWithPlate(bear, bound);
+  const ContactModel model = weldedFloorPlateAndRidge(bear, bound);
   const AlignedBox3r& root = mesh.tree().nodes().front().box;
   const Real margin = 0.02 * bound, edgeRadius = edgeRadiusFor(model.partners[0], bear.equivalentRadius);
   std::mt19937 random(7);
   std::uniform_real_distribution<Real> uniform(0, 1);
   int compared = 0, touching = 0, listedWithout = 0, missed = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    // About the plate's top or its foot, or on the floor beside it.
-    const Real x = bound * (2.2 * uniform(random) - 1.1), y = bound * (3 * uniform(random) - 1.5);
-    const Real z = uniform(random) < 0.3 ? 2.5 * bound + 0.3 * bound * uniform(random) : bound * (0.9 + 0.3 * uniform(random));
-    const BodyState from = at(Vector3r(x, y, z), randomTurn(random));
+    const Real where = uniform(random), y = bound * (3 * uniform(random) - 1.5);
+    const Vector3r position =
+        where < 0.25  ? Vector3r(bound * (0.6 * uniform(random) - 0.3), y, bound * (2.2 + 0.6 * uniform(random)))
+        : where < 0.5 ? Vector3r(bound * (1.5 + 1.2 * uniform(random) - 0.6), y, bound * (1.1 + 0.4 * uniform(random)))
+                      : Vector3r(bound * (2 * uniform(random) - 1), y, bound * (0.9 + 0.3 * uniform(random)));
+    const BodyState from = at(position, randomTurn(random));
     // A motion within the margin: a random offset and turn, scaled down until the root box moves by at most u margins.
     const Vector3r offset = Vector3r(uniform(random) - 0.5, uniform(random) - 0.5, uniform(random) - 0.5).normalized();
     const Vector3r axis = Vector3r(uniform(random) - 0.5, uniform(random) - 0.5, uniform(random) - 0.5).normalized();
@@ -292,47 +302,67 @@ TEST(PartnerCulling, KeptCandidatesFindWhatTheWholeTreeFinds) {
 
 // The engine keeps a facet pair's candidates while the body moves within their skin and makes them again when it
 // leaves it, crosses to the facet's other side or the facet changes; every step finds what the pair finds without
-// them. S1's bear moves 400 steps by about 0.02 mm and 0.03 degrees each (the drum of scene S7 moves its bodies by up
-// to 0.04 mm per step), first across the plate's top, pressed onto it (its centre crosses the plate's plane), then
-// along the floor, pressed 0.3 mm into it, and 1.3 mm once the floor is raised by 1 mm: each pair's result with its
-// candidates kept, step after step, equals the pair resolved afresh, bit for bit.
+// them. S1's bear moves 450 steps of about 0.04 mm and 0.03 degrees relative to the facets: across the plate's top
+// edge, which cuts into it (its centre crosses the plate's plane: the plate's facets see it go to their other side);
+// down the middle of the ridge's far face, its farthest vertex that way 0.3 mm into it, near the plane of the ridge's
+// other face; along the floor, its lowest vertex 0.3 mm below it, then 1.3 mm once the floor is raised by 1 mm. The whole scene turns and moves meanwhile, as a drum's wall does (the facets' states move with it). Each
+// pair's result with its candidates kept, step after step, equals the pair resolved afresh, bit for bit.
 TEST(PartnerCulling, APairKeepsItsCandidatesAcrossSteps) {
   const RoundedBody bear = loadRecordedScene().model.bodies[0];
   const Real bound = bear.mesh->sphereBoundRadius();
-  ContactModel model = weldedFloorWithPlate(bear, bound);
+  ContactModel model = weldedFloorPlateAndRidge(bear, bound);
   ContactData data;
   data.resize(model);
   data.timeStep = 1e-5;
   std::vector<CandidateList> lists(model.partners.size());
   std::vector<PressureGeom> scratch;
-  const int steps = 400;
+  const int legSteps = 150, steps = 3 * legSteps;
   const Vector3r axis = Vector3r(1, 2, 3).normalized();
-  // The height at which the bear, as turned at the middle of the path, sinks 0.3 mm into the floor.
-  const Quaternionr middle(Eigen::AngleAxis<Real>(0.1, axis));
-  Real lowest = 0;
-  for (const Vector3r& v : bear.mesh->vertices()) lowest = std::min(lowest, (middle * v).z());
-  const Real onFloor = -lowest - bear.mesh->maxCapHeight() - 3e-4;
-  int touchingSteps = 0;
+  auto turn = [&](int step) { return Quaternionr(Eigen::AngleAxis<Real>(5e-4 * step, axis)); };
+  // The ridge's far face: its outward normal and its slope's direction.
+  const Vector3r farNormal = Vector3r(0.8, 0, 1).normalized(), downFar = Vector3r(1, 0, -0.8).normalized();
+  int touchingSteps = 0, flips = 0;
   long rebuilds = 0;
   for (int step = 0; step < steps; ++step) {
-    if (step == 3 * steps / 4) {  // the floor raised by 1 mm and welded anew: every list is made again
-      for (int f = 0; f < 8; ++f)
-        for (Vector3r& corner : std::get<Facet>(model.partners[f].shape).vertices) corner.z() += 1e-3;
-      weldFacetPartners(model, data.partnerStates);
+    const int leg = step / legSteps;
+    const Real s = static_cast<Real>(step % legSteps) / legSteps - 0.5;  // -0.5 to 0.5 along each leg
+    Vector3r position = leg == 0 ? Vector3r(0.1 * bound * s, 0.3 * bound, 2.3 * bound) : Vector3r(-1.2 * bound, 0.1 * bound * s, 0);
+    const Quaternionr orientation = turn(step);
+    if (leg == 1) {
+      // On the far face, its farthest vertex that way 0.3 mm into the face's middle, moved down the slope.
+      Vector3r deepest = Vector3r::Zero();
+      for (const Vector3r& vertex : bear.mesh->vertices())
+        if (farNormal.dot(orientation * vertex) < farNormal.dot(deepest)) deepest = orientation * vertex;
+      const Vector3r middle(1.75 * bound, -0.2 * bound, 0.2 * bound);
+      position = middle - deepest - 3e-4 * farNormal + 0.1 * bound * s * downFar;
     }
-    const Real s = static_cast<Real>(step) / steps;
-    const Vector3r position = s < 0.5 ? Vector3r(0.08 * bound * (2 * s - 0.5), 0.3 * bound, 2.3 * bound)
-                                      : Vector3r(-1.2 * bound, 0.08 * bound * (2 * s - 1.5), onFloor);
-    data.bodyStates[0] = at(position, Quaternionr(Eigen::AngleAxis<Real>(0.2 * s, axis)));
+    if (leg == 2) {
+      if (step == 2 * legSteps + legSteps / 2) {  // the floor raised by 1 mm and welded anew: every list is made again
+        for (int f = 0; f < 8; ++f)
+          for (Vector3r& corner : std::get<Facet>(model.partners[f].shape).vertices) corner.z() += 1e-3;
+        weldFacetPartners(model, data.partnerStates);
+      }
+      Real lowest = 0;
+      for (const Vector3r& v : bear.mesh->vertices()) lowest = std::min(lowest, (orientation * v).z());
+      position.z() = -lowest - 3e-4;
+    }
+    // The scene in a frame that turns by 0.03 degrees per step about a line 3 sizes below it, as a drum's wall does.
+    const Quaternionr frame(Eigen::AngleAxis<Real>(5e-4 * step, Vector3r::UnitY()));
+    const Vector3r pivot(0, 0, -3 * bound);
+    auto placed = [&](const Vector3r& x) -> Vector3r { return pivot + frame * (x - pivot); };
+    data.bodyStates[0] = at(placed(position), frame * orientation);
     data.bodyStates[0].velocity = Vector3r(0.1, -0.2, 0.05);
     data.bodyStates[0].angularVelocity = Vector3r(1, 0, -2);
+    for (BodyState& state : data.partnerStates) state = at(placed(Vector3r::Zero()), frame);
     bool touches = false;
     for (size_t p = 0; p < model.partners.size(); ++p) {
       const BodyPair pair{0, 1 + static_cast<int>(p), static_cast<int>(p)};
+      const int sideBefore = lists[p].facet ? lists[p].facet->candidates.side : -1;
       TangentialSpring keptSpring, freshSpring;
       const PairResult kept = resolvePair(model, data, pair, scratch, nullptr, &lists[p], &keptSpring);
       const PairResult alone = resolvePair(model, data, pair, scratch, nullptr, nullptr, &freshSpring);
       rebuilds += kept.statistics.candidateRebuilds;
+      flips += sideBefore >= 0 && lists[p].facet->candidates.side != sideBefore;
       EXPECT_EQ(kept.onBody.force, alone.onBody.force) << "step " << step << ", facet " << p;
       EXPECT_EQ(kept.onBody.torque, alone.onBody.torque) << "step " << step << ", facet " << p;
       EXPECT_TRUE(sameCounts(kept.statistics.narrowPhase, alone.statistics.narrowPhase)) << "step " << step;
@@ -341,6 +371,7 @@ TEST(PartnerCulling, APairKeepsItsCandidatesAcrossSteps) {
     touchingSteps += touches;
   }
   EXPECT_GT(touchingSteps, steps * 9 / 10);
+  EXPECT_GE(flips, 2);  // the plate's two facets
   // Made again every few steps, not at every step of every pair.
   EXPECT_GT(rebuilds, static_cast<long>(model.partners.size()) + 10);
   EXPECT_LT(rebuilds, static_cast<long>(model.partners.size()) * steps / 3);
