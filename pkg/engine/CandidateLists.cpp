@@ -4,6 +4,7 @@
 
 #include "pkg/bound/BatchedCandidates.hpp"
 #include "pkg/common/StageClock.hpp"
+#include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
 
 namespace roundedmesh {
 namespace {

@@ -15,7 +15,7 @@
 
 #include "pkg/engine/BodyState.hpp"
 #include "pkg/engine/ContactModel.hpp"
-#include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
+#include "pkg/geom/FacetCandidates.hpp"
 #include "pkg/geom/PressureGeom.hpp"
 #include "pkg/law/CoulombFriction.hpp"
 #include "pkg/law/NodeForces.hpp"

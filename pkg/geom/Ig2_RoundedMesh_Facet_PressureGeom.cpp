@@ -204,10 +204,6 @@ FacetSurfaces::FacetSurfaces(const PlacedFacet& facet, int side, Real edgeRadius
 
 }  // namespace
 
-bool FacetCandidates::empty() const {
-  return face.empty() && std::all_of(strips.begin(), strips.end(), [](const auto& s) { return s.empty(); });
-}
-
 void facetCandidates(const RoundedMesh& mesh, const PlacedFacet& facet, int side, Real edgeRadius, Real margin,
                      FacetCandidates& candidates) {
   candidates.side = side;

@@ -17,23 +17,13 @@
 #include <array>
 #include <vector>
 
+#include "pkg/geom/FacetCandidates.hpp"
 #include "pkg/geom/TrianglePlaneGeom.hpp"
 #include "pkg/shape/Facet.hpp"
 
 namespace roundedmesh {
 
-// The body's triangles that Ig2_RoundedMesh_Facet_PressureGeom may test against a facet, for the body on `side` of it:
-// its face's (faceCandidates) and each edge rounding's (featureCandidates, in the order of the facet's edges), found
-// for the facet and body where they were when these were made, with a margin: they hold every triangle the Ig2 tests
-// while the body stays on that side and no point of the body's tree moves by more than the margin relative to the
-// facet. Kept per pair from step to step (CandidateList::facet), as the triangle pairs of two bodies are.
-struct FacetCandidates {
-  int side = 0;
-  std::vector<int> face;
-  std::array<std::vector<int>, 3> strips;
-  bool empty() const;  // then the Ig2 finds nothing
-};
-
+// Makes `candidates` (FacetCandidates.hpp) for the body on `side` of the facet, with a margin [m].
 void facetCandidates(const RoundedMesh& mesh, const PlacedFacet& facet, int side, Real edgeRadius, Real margin,
                      FacetCandidates& candidates);
 

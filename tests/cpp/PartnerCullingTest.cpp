@@ -14,6 +14,7 @@
 #include "pkg/engine/CandidateLists.hpp"
 #include "pkg/engine/PairEvaluation.hpp"
 #include "pkg/engine/WeldedFacets.hpp"
+#include "pkg/geom/Ig2_RoundedMesh_Facet_PressureGeom.hpp"
 #include "pkg/geom/TriangleEdgeGeom.hpp"
 #include "tests/cpp/TestSupport.hpp"
 
