@@ -31,6 +31,16 @@ struct NearScan {
   size_t count;
 };
 
+// A deep list's shell about one triangle of body 2: its cap box moved into body 1's frame and grown by the list's
+// reach (outer) and by the Hertz range's (inner).
+struct Shell {
+  Real outerMin[3], outerMax[3], innerMin[3], innerMax[3];
+};
+
+// Body 1's columns are padded to a multiple of this: whole vectors of doubles on every x86 target (at most 8 lanes);
+// ShellFirstPass refuses a target whose lanes do not divide it.
+constexpr size_t kPadding = 16;
+
 }  // namespace batched
 }  // namespace roundedmesh
 
@@ -68,6 +78,26 @@ struct ScanConstants {
     }
   }
 };
+
+// How a pass reads one body's triangle columns into its lanes: the triangles at `index` (any pairs), consecutive
+// triangles from `first`, or one triangle in every lane. Each reads the same numbers, so the tests decide alike.
+struct ByIndex {
+  VI index;
+  HWY_INLINE V operator()(const std::vector<Real>& column) const { return hn::GatherIndex(D(), column.data(), index); }
+};
+struct Consecutive {
+  size_t first;
+  HWY_INLINE V operator()(const std::vector<Real>& column) const { return hn::LoadU(D(), column.data() + first); }
+};
+struct Broadcast {
+  int64_t triangle;
+  HWY_INLINE V operator()(const std::vector<Real>& column) const { return hn::Set(D(), column[triangle]); }
+};
+
+template <class Read>
+HWY_INLINE void Read3(const Read& read, const std::vector<Real> (&column)[3], V out[3]) {
+  for (int k = 0; k < 3; ++k) out[k] = read(column[k]);
+}
 
 // The outcome of a test `lhs <= rhs` known whatever the rounding: each side may differ from the reference's by up to
 // `tolerance`. A lane that is neither (within the tolerance, or NaN) is left to the reference.
@@ -126,10 +156,11 @@ V Separation(const V ax[3], const V ay[3], const V bx[3], const V by[3]) {
 // only; or all of 1-5 and both sides of every test.
 enum class Filters { TwoToFour, FirstPass, Whole };
 
-// Filters 1-5 of touchablePair (TrianglePairCandidates.cpp, canTouch) for the pairs (s, t), in the reference's
-// formulas, as many as kFilters says (filters 2-4: passesFilters2to4's).
-template <Filters kFilters>
-HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k, VI s, VI t) {
+// Filters 1-5 of touchablePair (TrianglePairCandidates.cpp, canTouch) for the pairs (s, t), s read by `s` from mesh 1's
+// columns and t by `t` from mesh 2's, in the reference's formulas, as many as kFilters says (filters 2-4:
+// passesFilters2to4's).
+template <Filters kFilters, class Read1, class Read2>
+HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k, const Read1& s, const Read2& t) {
   constexpr bool kWhole = kFilters == Filters::Whole;
   const D d;
   const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), half = hn::Set(d, 0.5);
@@ -138,10 +169,10 @@ HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k,
   if constexpr (kFilters != Filters::TwoToFour) {
     // Filter 1: triangle t's cap box moved into body 1's frame, grown by the reach, against s's.
     V min2[3], max2[3], min1[3], max1[3], centre2[3], size2[3], centre[3], extent[3];
-    Gather3(D(), q.mesh2->boxMin, t, min2);
-    Gather3(D(), q.mesh2->boxMax, t, max2);
-    Gather3(D(), q.mesh1->boxMin, s, min1);
-    Gather3(D(), q.mesh1->boxMax, s, max1);
+    Read3(t, q.mesh2->boxMin, min2);
+    Read3(t, q.mesh2->boxMax, max2);
+    Read3(s, q.mesh1->boxMin, min1);
+    Read3(s, q.mesh1->boxMax, max1);
     for (int i = 0; i < 3; ++i) {
       centre2[i] = half * (min2[i] + max2[i]);
       size2[i] = half * (max2[i] - min2[i]);
@@ -157,37 +188,37 @@ HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k,
   }
   // Filter 2: the circumscribed balls.
   V pc[3], qc0[3], qc[3], offset[3];
-  Gather3(D(), q.mesh1->circumcentre, s, pc);
-  Gather3(D(), q.mesh2->circumcentre, t, qc0);
+  Read3(s, q.mesh1->circumcentre, pc);
+  Read3(t, q.mesh2->circumcentre, qc0);
   Rotate3(k.R, qc0, qc);
   for (int i = 0; i < 3; ++i) {
     qc[i] = qc[i] + k.T[i];
     offset[i] = qc[i] - pc[i];
   }
-  const V pRho = hn::GatherIndex(d, q.mesh1->circumradius.data(), s);
-  const V qRho = hn::GatherIndex(d, q.mesh2->circumradius.data(), t);
+  const V pRho = s(q.mesh1->circumradius);
+  const V qRho = t(q.mesh2->circumradius);
   const V balls = pRho + qRho + k.reach;
   filters1to4.fails = hn::Or(filters1to4.fails, hn::Gt(Dot3(offset, offset), (balls + margin) * (balls + margin)));
   filters1to4.passes = hn::And(filters1to4.passes, hn::Lt(Dot3(offset, offset), (balls - margin) * (balls - margin)));
   // Filters 3 and 4: the encompassing spheres' overlap and facing, within the motion.
   V ps[3], qs0[3], sphereOffset[3], pn[3], qn0[3], qn[3], psFromOrigin2[3];
-  Gather3(D(), q.mesh1->sphereCentre, s, ps);
-  Gather3(D(), q.mesh2->sphereCentre, t, qs0);
+  Read3(s, q.mesh1->sphereCentre, ps);
+  Read3(t, q.mesh2->sphereCentre, qs0);
   Rotate3(k.R, qs0, sphereOffset);
   for (int i = 0; i < 3; ++i) {
     sphereOffset[i] = sphereOffset[i] + k.T[i] - ps[i];
     psFromOrigin2[i] = ps[i] - k.T[i];
   }
   const V distance = hn::Sqrt(Dot3(sphereOffset, sphereOffset));
-  const V pR = hn::GatherIndex(d, q.mesh1->radius.data(), s);
-  const V qR = hn::GatherIndex(d, q.mesh2->radius.data(), t);
-  const V qsFromOrigin = hn::GatherIndex(d, q.mesh2->sphereCentreDistance.data(), t);
+  const V pR = s(q.mesh1->radius);
+  const V qR = t(q.mesh2->radius);
+  const V qsFromOrigin = t(q.mesh2->sphereCentreDistance);
   const V moved = k.skin * hn::Max(one, qsFromOrigin * k.inverseBound2);
   const V apart = k.skin * hn::Max(one, hn::Min(qsFromOrigin, hn::Sqrt(Dot3(psFromOrigin2, psFromOrigin2))) * k.inverseBound2);
   const V overlap = pR + qR - distance;
   filters1to4.check(zero, overlap + apart, margin);
-  Gather3(D(), q.mesh1->normal, s, pn);
-  Gather3(D(), q.mesh2->normal, t, qn0);
+  Read3(s, q.mesh1->normal, pn);
+  Read3(t, q.mesh2->normal, qn0);
   Rotate3(k.R, qn0, qn);
   filters1to4.check(zero, Dot3(pn, sphereOffset) + moved, margin);
   filters1to4.check(Dot3(qn, sphereOffset), moved + k.turn * (distance + moved), margin);
@@ -239,8 +270,8 @@ HWY_INLINE Verdict TestPairs(const batched::NearScan& q, const ScanConstants& k,
   V px[3], py[3], qx[3], qy[3], farSq = zero;
   for (int corner = 0; corner < 3; ++corner) {
     V xp[3], xq0[3], xq[3];
-    Gather3(D(), q.mesh1->corner[corner], s, xp);
-    Gather3(D(), q.mesh2->corner[corner], t, xq0);
+    Read3(s, q.mesh1->corner[corner], xp);
+    Read3(t, q.mesh2->corner[corner], xq0);
     Rotate3(k.R, xq0, xq);
     for (int i = 0; i < 3; ++i) {
       xp[i] = xp[i] - c[i];
@@ -287,7 +318,8 @@ size_t KeptNearPairs(const batched::NearScan& q, int64_t* kept) {
   size_t keptCount = 0;
   size_t i = 0;
   for (; i + lanes <= q.count; i += lanes) {
-    const Verdict verdict = TestPairs<Filters::FirstPass>(q, k, hn::LoadU(di, q.s + i), hn::LoadU(di, q.t + i));
+    const Verdict verdict =
+        TestPairs<Filters::FirstPass>(q, k, ByIndex{hn::LoadU(di, q.s + i)}, ByIndex{hn::LoadU(di, q.t + i)});
     const auto index = hn::Iota(di, static_cast<int64_t>(i));
     keptCount += hn::CompressStore(index, hn::RebindMask(di, hn::Not(verdict.fails)), di, kept + keptCount);
   }
@@ -312,7 +344,8 @@ void Decided(const batched::NearScan& q, const int64_t* kept, size_t count, int6
       index = tail;
     }
     const VI which = hn::LoadU(di, index);
-    const Verdict verdict = TestPairs<kFilters>(q, k, hn::GatherIndex(di, q.s, which), hn::GatherIndex(di, q.t, which));
+    const Verdict verdict =
+        TestPairs<kFilters>(q, k, ByIndex{hn::GatherIndex(di, q.s, which)}, ByIndex{hn::GatherIndex(di, q.t, which)});
     const VI outcome = hn::IfThenElse(hn::RebindMask(di, verdict.passes), hn::Set(di, 1),
                                       hn::IfThenElse(hn::RebindMask(di, verdict.fails), hn::Zero(di), hn::Set(di, -1)));
     if (n == lanes) {
@@ -322,6 +355,36 @@ void Decided(const batched::NearScan& q, const int64_t* kept, size_t count, int6
       std::copy(tailDecision, tailDecision + n, decision + i);
     }
   }
+}
+
+// A deep list's shell (appendTouchableShellPairsBatched), the scan's mesh 1 being the columns of body 1's triangles in it, in
+// order and padded with NaN: the positions of those whose cap boxes meet the shell's outer box and not its inner one,
+// as AlignedBox3r::intersects decides (comparisons only, a NaN meeting nothing), and that the first pass does not reject
+// against body 2's triangle `two`, written to `kept` (room for the padded columns). Returns how many.
+size_t ShellFirstPass(const batched::NearScan& q, size_t padded, int64_t two, const batched::Shell& shell,
+                      int64_t* kept) {
+  const D d;
+  const DI di;
+  const size_t lanes = hn::Lanes(d);
+  HWY_ASSERT(batched::kPadding % lanes == 0);  // whole vectors within the padded columns
+  const ScanConstants k(q);
+  size_t count = 0;
+  for (size_t i = 0; i < padded; i += lanes) {
+    M outer = hn::FirstN(d, lanes), inner = hn::FirstN(d, lanes);
+    for (int axis = 0; axis < 3; ++axis) {
+      const V min = hn::LoadU(d, q.mesh1->boxMin[axis].data() + i), max = hn::LoadU(d, q.mesh1->boxMax[axis].data() + i);
+      outer = hn::And(outer, hn::And(hn::Le(min, hn::Set(d, shell.outerMax[axis])),
+                                     hn::Le(hn::Set(d, shell.outerMin[axis]), max)));
+      inner = hn::And(inner, hn::And(hn::Le(min, hn::Set(d, shell.innerMax[axis])),
+                                     hn::Le(hn::Set(d, shell.innerMin[axis]), max)));
+    }
+    const M inShell = hn::AndNot(inner, outer);
+    if (hn::AllFalse(d, inShell)) continue;
+    const Verdict verdict = TestPairs<Filters::FirstPass>(q, k, Consecutive{i}, Broadcast{two});
+    const M keep = hn::AndNot(verdict.fails, inShell);
+    count += hn::CompressStore(hn::Iota(di, static_cast<int64_t>(i)), hn::RebindMask(di, keep), di, kept + count);
+  }
+  return count;
 }
 
 // The second pass of a scan, over the first's `kept` pairs: every filter.
@@ -343,10 +406,12 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 
 #include <algorithm>
+#include <limits>
 
 namespace roundedmesh {
 
 HWY_EXPORT(KeptNearPairs);
+HWY_EXPORT(ShellFirstPass);
 HWY_EXPORT(DecidedNearPairs);
 HWY_EXPORT(DecidedFilters2to4);
 HWY_EXPORT(TargetName);
@@ -401,28 +466,107 @@ void splitPairs(const std::vector<TrianglePair>& pairs, std::vector<int64_t>& s,
   }
 }
 
+// The second pass over the scan's pairs at positions `kept` (those the first left), and the reference's own test for
+// the pairs it cannot decide: appends the pairs that pass to `pairs`, in order. Returns how many the reference decided.
+size_t appendTouchable(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                       const Vector3r& translation, Real skin, Real depth, const batched::NearScan& scan,
+                       const int64_t* kept, size_t count, std::vector<TrianglePair>& pairs) {
+  thread_local std::vector<int64_t> decision;
+  decision.resize(count);
+  HWY_DYNAMIC_DISPATCH(DecidedNearPairs)(scan, kept, count, decision.data());
+  const Matrix3r absRotation = rotation.cwiseAbs();
+  size_t undecided = 0;
+  for (size_t k = 0; k < count; ++k) {
+    const TrianglePair st{static_cast<int>(scan.s[kept[k]]), static_cast<int>(scan.t[kept[k]])};
+    if (decision[k] == -1) ++undecided;
+    if (decision[k] == 1 ||
+        (decision[k] == -1 && touchablePair(mesh1, st[0], mesh2, st[1], rotation, absRotation, translation, skin, depth)))
+      pairs.push_back(st);
+  }
+  return undecided;
+}
+
+// The columns of the triangles `which` of `all`, in that order, padded with NaN to a multiple of kPadding.
+void selectColumns(const TriangleColumns& all, const std::vector<int>& which, TriangleColumns& selected) {
+  const size_t padded = (which.size() + batched::kPadding - 1) / batched::kPadding * batched::kPadding;
+  auto select = [&](const std::vector<Real>& from, std::vector<Real>& to) {
+    to.assign(padded, std::numeric_limits<Real>::quiet_NaN());
+    for (size_t i = 0; i < which.size(); ++i) to[i] = from[which[i]];
+  };
+  for (int k = 0; k < 3; ++k) {
+    select(all.boxMin[k], selected.boxMin[k]);
+    select(all.boxMax[k], selected.boxMax[k]);
+    select(all.circumcentre[k], selected.circumcentre[k]);
+    select(all.sphereCentre[k], selected.sphereCentre[k]);
+    select(all.normal[k], selected.normal[k]);
+    for (int corner = 0; corner < 3; ++corner) select(all.corner[corner][k], selected.corner[corner][k]);
+  }
+  select(all.circumradius, selected.circumradius);
+  select(all.radius, selected.radius);
+  select(all.sphereCentreDistance, selected.sphereCentreDistance);
+  selected.largestRadius = all.largestRadius;
+}
+
 }  // namespace
 
 size_t touchableTrianglePairsBatched(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
                                    const Vector3r& translation, Real skin, Real depth,
                                    const std::vector<TrianglePair>& near, std::vector<TrianglePair>& pairs) {
   pairs.clear();
-  thread_local std::vector<int64_t> s, t, kept, decision;
+  thread_local std::vector<int64_t> s, t, kept;
   splitPairs(near, s, t);
   kept.resize(near.size());
-  decision.resize(near.size());
   const batched::NearScan scan = scanOf(mesh1, mesh2, rotation, translation, skin, depth + skin, s, t);
   const size_t keptCount = HWY_DYNAMIC_DISPATCH(KeptNearPairs)(scan, kept.data());
-  HWY_DYNAMIC_DISPATCH(DecidedNearPairs)(scan, kept.data(), keptCount, decision.data());
-  const Matrix3r absRotation = rotation.cwiseAbs();
+  return appendTouchable(mesh1, mesh2, rotation, translation, skin, depth, scan, kept.data(), keptCount, pairs);
+}
+
+size_t appendTouchableShellPairsBatched(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                                        const Vector3r& translation, Real skin, Real depth, Real inner,
+                                        const std::vector<int>& reaching1, const std::vector<int>& reaching2,
+                                        std::vector<TrianglePair>& pairs) {
+  // The pairs the first pass leaves, a chunk at a time through the second, so that the scratch each thread keeps stays
+  // small (two of YADE's GTS horses of 9,514 triangles have tens of millions of pairs in their shells).
+  constexpr size_t kChunk = size_t(1) << 16;
+  thread_local TriangleColumns selected;
+  thread_local std::vector<int64_t> s, t, positions, every;
+  selectColumns(mesh1.columns(), reaching1, selected);
+  const size_t padded = selected.radius.size();
+  s.clear();
+  t.clear();
   size_t undecided = 0;
-  for (size_t k = 0; k < keptCount; ++k) {
-    const TrianglePair& st = near[kept[k]];
-    if (decision[k] == -1) ++undecided;
-    if (decision[k] == 1 ||
-        (decision[k] == -1 && touchablePair(mesh1, st[0], mesh2, st[1], rotation, absRotation, translation, skin, depth)))
-      pairs.push_back(st);
+  auto secondPass = [&]() {
+    every.resize(s.size());
+    for (size_t k = 0; k < s.size(); ++k) every[k] = static_cast<int64_t>(k);
+    const batched::NearScan scan = scanOf(mesh1, mesh2, rotation, translation, skin, depth + skin, s, t);
+    undecided += appendTouchable(mesh1, mesh2, rotation, translation, skin, depth, scan, every.data(), s.size(), pairs);
+    s.clear();
+    t.clear();
+  };
+  batched::NearScan firstPass = scanOf(mesh1, mesh2, rotation, translation, skin, depth + skin, s, t);
+  firstPass.mesh1 = &selected;  // the margin stays the whole mesh's
+  firstPass.s = firstPass.t = nullptr;  // its pairs are the shell's, not listed
+  firstPass.count = 0;
+  positions.resize(padded);
+  for (const int two : reaching2) {
+    const AlignedBox3r& box2 = mesh2.tree().triangleBox(two);
+    const AlignedBox3r outer = transformedBox(box2, rotation, translation, depth + skin);
+    const AlignedBox3r within = transformedBox(box2, rotation, translation, inner);
+    batched::Shell shell;
+    for (int axis = 0; axis < 3; ++axis) {
+      shell.outerMin[axis] = outer.min()[axis];
+      shell.outerMax[axis] = outer.max()[axis];
+      shell.innerMin[axis] = within.min()[axis];
+      shell.innerMax[axis] = within.max()[axis];
+    }
+    const size_t count = HWY_DYNAMIC_DISPATCH(ShellFirstPass)(firstPass, padded, two, shell, positions.data());
+    for (size_t k = 0; k < count; ++k) {
+      s.push_back(reaching1[positions[k]]);
+      t.push_back(two);
+    }
+    if (s.size() >= kChunk) secondPass();
   }
+  secondPass();
   return undecided;
 }
 

@@ -23,6 +23,16 @@ size_t touchableTrianglePairsBatched(const RoundedMesh& mesh1, const RoundedMesh
                                    const Vector3r& translation, Real skin, Real depth,
                                    const std::vector<TrianglePair>& near, std::vector<TrianglePair>& pairs);
 
+// The pairs of a list as deep as the bodies beyond the trees' search at the Hertz range (nearTrianglePairs), batched:
+// every s of `reaching1` and t of `reaching2` (the triangles whose caps reach into the other body) whose cap boxes meet
+// within depth + skin and not within `inner` [m] (AlignedBox3r::intersects of s's box and t's moved into body 1's frame
+// by transformedBox), that touchablePair keeps, appended to `pairs` in the order t, then s, each as listed. Returns how
+// many pairs the reference's own test decided.
+size_t appendTouchableShellPairsBatched(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,
+                                        const Vector3r& translation, Real skin, Real depth, Real inner,
+                                        const std::vector<int>& reaching1, const std::vector<int>& reaching2,
+                                        std::vector<TrianglePair>& pairs);
+
 // The near search's filters 2-4 (passesFilters2to4) on `pairs`, batched: keeps those that pass, in their order.
 // `reach`: depth + skin [m]. Returns how many pairs the reference's own test decided.
 size_t keepPassingFilters2to4Batched(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const Matrix3r& rotation,

@@ -5,7 +5,6 @@
 #include <utility>
 
 #include "pkg/bound/BatchedCandidates.hpp"
-#include "pkg/bound/BoxesInShell.hpp"
 #include "pkg/bound/CapReach.hpp"
 #include "pkg/shape/TriangleCorners.hpp"
 
@@ -166,31 +165,11 @@ void nearTrianglePairs(const RoundedMesh& mesh1, const RoundedMesh& mesh2, const
   for (int t = 0; t < mesh2.triangleCount(); ++t)
     if (capReaches(mesh2, t, PlacedMesh{mesh1, back, backTranslation}, 2 * skin)) reaching2.push_back(t);
   // These are many (every pair of the triangles at and in the other body: tens of millions for two of YADE's GTS
-  // horses of 9,514 triangles), and few of them can touch: all five filters, batched, for this list's skin, a chunk
-  // at a time, so that the scratch each thread keeps stays small. Filter 5 holds for a pose within the skin of this
-  // one if the pair can touch there, so the lists taken from this one lose no pair they would keep.
-  constexpr size_t kChunk = size_t(1) << 16;
-  thread_local std::vector<TrianglePair> inBoxes, touchable;
-  inBoxes.clear();
-  auto filter = [&]() {
-    touchableTrianglePairsBatched(mesh1, mesh2, rotation, translation, skin, depth, inBoxes, touchable);
-    pairs.insert(pairs.end(), touchable.begin(), touchable.end());
-    inBoxes.clear();
-  };
-  thread_local BoxColumns boxes1;
-  thread_local std::vector<int64_t> inShell;
-  boxes1.assign(mesh1.tree().triangleBoxes(), reaching1);
-  for (int t : reaching2) {
-    const AlignedBox3r& box2 = mesh2.tree().triangleBox(t);
-    // Not too far, and not found above.
-    boxesInShell(boxes1, transformedBox(box2, rotation, translation, depth + skin),
-                 transformedBox(box2, rotation, translation, shallow + skin), inShell);
-    for (const int64_t i : inShell) {
-      inBoxes.push_back({reaching1[i], t});
-      if (inBoxes.size() == kChunk) filter();
-    }
-  }
-  filter();
+  // horses of 9,514 triangles), and few of them can touch: all five filters, batched, for this list's skin. Filter 5
+  // holds for a pose within the skin of this one if the pair can touch there, so the lists taken from this one lose no
+  // pair they would keep.
+  appendTouchableShellPairsBatched(mesh1, mesh2, rotation, translation, skin, depth, shallow + skin, reaching1,
+                                   reaching2, pairs);
 }
 
 bool touchablePair(const RoundedMesh& mesh1, int s, const RoundedMesh& mesh2, int t, const Matrix3r& rotation,

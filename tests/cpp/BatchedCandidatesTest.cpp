@@ -4,11 +4,16 @@
 // a distorted icosphere, a spheroid, 1 mm to 1 m), at the pose the near list was built at and moved within its skin;
 // and (RecordedSceneTest) for every list of S1's recorded shaking. The near search's filters 2-4 (passesFilters2to4),
 // batched, keep what the reference keeps, on the same random triangle pairs and on the pairs of the library's body
-// pairs' trees, on every instruction set the processor has and the build compiled. No tolerance: the batches decide a pair only by a
+// pairs' trees, on every instruction set the processor has and the build compiled. A deep list's shell, batched, is the
+// reference's shell (each triangle of body 1 whose box meets the outer box and not the inner one, as
+// AlignedBox3r::intersects decides, through touchablePair) for two gummy bears at random poses. No tolerance: the batches decide a pair only by a
 // margin, and the pairs within it go to the reference's own test; that these are few is checked too, or the batches
 // would only be a detour to the reference.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include "bench/RecordedScene.hpp"
 #include "pkg/bound/BatchedCandidates.hpp"
 #include "tests/support/HighwayTargets.hpp"
 #include "tests/support/RandomPairs.hpp"
@@ -171,6 +176,65 @@ TEST(BatchedCandidates, NearFiltersOfBodyPairsTreesAreTheReferences) {
     EXPECT_GT(kept, 10000);
     EXPECT_LT(kept, inBoxes);
     EXPECT_LT(undecided, 1e-3 * inBoxes);
+  });
+}
+
+// A deep list's shell about a bear and a bear of 0.8 times its size (two meshes, so that their columns, bounds and
+// margins are not taken for each other's), 150 random poses from interpenetrating to just apart: random subsets of
+// their triangles (a fifth to all, in a random order, which the pairs must follow) as those that reach into the other,
+// a depth up to half the bound radius and an inner box's margin up to the depth (the Hertz range's, whose pairs the
+// trees' search found).
+TEST(BatchedCandidates, DeepShellPairsOfTwoBearsAreTheReferences) {
+  static const RecordedScene scene = loadRecordedScene();
+  const RoundedMesh& mesh = *scene.model.bodies[0].mesh;
+  std::vector<Vector3r> vertices = mesh.vertices();
+  for (Vector3r& v : vertices) v *= 0.8;
+  std::vector<Real> radii = mesh.radii();
+  for (Real& r : radii) r *= 0.8;
+  const RoundedMesh small(std::move(vertices), mesh.triangles(), radii);
+  const Real bound = mesh.sphereBoundRadius();
+  test::forEachInstructionSet([&](int64_t) {
+    test::RandomSource random(9);
+    long found = 0, cutByInner = 0;
+    for (int trial = 0; trial < 150; ++trial) {
+      const Matrix3r rotation = randomTurn(random, M_PI);
+      const Vector3r translation = random.uniform(0, 1.5) * bound * random.direction();
+      const Real skin = bound * std::exp(random.uniform(std::log(1e-5), std::log(1e-2)));
+      const Real depth = random.uniform(0, 0.5) * bound;
+      const Real inner = random.uniform(0, 1) * (depth + skin);
+      auto subset = [&]() {
+        std::vector<int> triangles;
+        const Real share = random.uniform(0.2, 1);
+        for (int t = 0; t < mesh.triangleCount(); ++t)
+          if (random.uniform(0, 1) < share) triangles.push_back(t);
+        for (size_t k = triangles.size(); k > 1; --k)
+          std::swap(triangles[k - 1], triangles[static_cast<size_t>(random.uniform(0, static_cast<Real>(k)))]);
+        return triangles;
+      };
+      const std::vector<int> reaching1 = subset(), reaching2 = subset();  // the meshes share their triangles' order
+      Pairs expected;
+      const Matrix3r absRotation = rotation.cwiseAbs();
+      for (const int t : reaching2) {
+        const AlignedBox3r outer = transformedBox(small.tree().triangleBox(t), rotation, translation, depth + skin);
+        const AlignedBox3r within = transformedBox(small.tree().triangleBox(t), rotation, translation, inner);
+        for (const int s : reaching1) {
+          const AlignedBox3r& box = mesh.tree().triangleBox(s);
+          if (!box.intersects(outer)) continue;
+          if (box.intersects(within)) {
+            ++cutByInner;
+            continue;
+          }
+          if (touchablePair(mesh, s, small, t, rotation, absRotation, translation, skin, depth)) expected.push_back({s, t});
+        }
+      }
+      Pairs batched{{-1, -1}};  // appended to
+      appendTouchableShellPairsBatched(mesh, small, rotation, translation, skin, depth, inner, reaching1, reaching2,
+                                       batched);
+      ASSERT_EQ(Pairs(batched.begin() + 1, batched.end()), expected) << "trial " << trial;
+      found += static_cast<long>(expected.size());
+    }
+    EXPECT_GT(found, 10000);
+    EXPECT_GT(cutByInner, 10000);
   });
 }
 

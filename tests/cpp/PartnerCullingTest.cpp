@@ -274,7 +274,9 @@ TEST(PartnerCulling, KeptCandidatesFindWhatTheWholeTreeFinds) {
         const PlacedFacet now = placedIn(model, static_cast<int>(f), state);
         const bool sideKept = facetSide(now) == candidates.side;
         // Within its clearance the centre stays on its side.
-        if ((state.position - from.position).norm() < clearance) EXPECT_TRUE(sideKept) << "trial " << trial;
+        if ((state.position - from.position).norm() < clearance) {
+          EXPECT_TRUE(sideKept) << "trial " << trial;
+        }
         if (!sideKept) return;  // the engine makes them again
         std::vector<PressureGeom> all, kept;
         NarrowPhaseCounts allCounts, keptCounts;
