@@ -6,7 +6,8 @@ all, 13,500 steps of 1e-4 s.
 
     /usr/bin/python3 scripts/s1_packing.py [--shape gummy_bear|...|all] [--peers clumps level_sets]
         [--peers-only] [--count 250] [--seed 1] [--dt 1e-4] [--duration 1.35] [--sample 100] [--frames 14]
-        [--threads 1] [--timing off|stages] [--checkpoint-every 1000] [--resume] [--plot-only] [--output out/s1]
+        [--threads 1] [--timing off|stages] [--energy] [--checkpoint-every 1000] [--resume] [--plot-only]
+        [--output out/s1]
 
 Runs, each in its own process and folder <output>/<run>:
     sphere        perfect spheres (rm.add_sphere): roundedmesh's analytic sphere, Hertz with Eq. 7 damping, the
@@ -59,6 +60,15 @@ centre of its spheres' union, within 0.3 mm of the bear's). Outputs of a run, in
                   of settling, machine, command
     height.png    mean and max height and the box's position vs time for this run
     timeline.png  with --timing stages: each window's wall ms per step split into roundedmesh's stages
+    energy.csv    with --energy (roundedmesh's runs; YADE's peers are not tracked): the energy balance at each
+                  window's end (EnergyBalance below), every term cumulated from the start [J]: kinetic (YADE's
+                  NewtonIntegrator), gravity_work (YADE's 'gravWork', minus gravity's work: the change of the
+                  bodies' potential energy), elastic (the engine's rmElastPotential: the contacts' elastic energy now),
+                  normal_damping and friction (rmNormDamp, rmFrictDissip: dissipated so far), box_work (the work the
+                  moving box did on the bodies), balance = kinetic + gravity_work + elastic + normal_damping +
+                  friction - box_work, which stays at 0 where every force has a potential and every loss is counted,
+                  and balance / (normal_damping + friction)
+    energy.png    with --energy: those terms and the balance against time
     vtk/          ParaView series <run>.pvd of --frames frames (roundedmesh.export.VtkSeries; YADE's spheres as
                   part 1 for the sphere and clump runs; none for level sets, which YADE 2023.02a's VTKRecorder
                   cannot write), evenly spaced, the last at the end of the run
@@ -115,8 +125,11 @@ FIELDS = ["step", "time_s", "phase", "box_z_m", "mean_height_m", "max_height_m",
           "outside", "body_pairs", "touching_pairs", "candidates", "contacts", "candidate_rebuilds",
           "near_rebuilds", "pairs_ms", "read_ms", "write_ms", "deepest_pair_r", "window_steps", "ms_per_step",
           "cpu_ms_per_step", *(f"window_{stage}" for stage in ("pairs_ms", *TIMED_STAGES))]
+ENERGY_FIELDS = ["step", "time_s", "kinetic_J", "gravity_work_J", "elastic_J", "normal_damping_J", "friction_J",
+                 "box_work_J", "balance_J", "balance_over_dissipated"]
 CHECKPOINT = "checkpoint.yade.gz"
 SCENE_TAG = "s1_packing.scene"  # O.tags key of the scene's parameters, to refuse a checkpoint of another scene
+BOX_WORK_TAG = "s1_packing.box_work"  # O.tags key of the work the box has done so far [J], kept in a checkpoint
 
 
 def run_names(shape, peers, peers_only):
@@ -143,6 +156,9 @@ def parse(argv):
     parser.add_argument("--timing", default="off", choices=("off", "stages"),
                         help="roundedmesh's rm.engine(timing=...): 'stages' also records the CPU time of the stages "
                              "inside the pairs per window in height.csv and draws timeline.png (default off)")
+    parser.add_argument("--energy", action="store_true",
+                        help="track the energy balance of roundedmesh's runs: energy.csv and energy.png (the module's "
+                             "documentation)")
     parser.add_argument("--checkpoint-every", type=int, default=1000,
                         help="steps between checkpoints, a multiple of --sample (default 1000)")
     parser.add_argument("--resume", action="store_true", help="continue each run from its checkpoint")
@@ -189,8 +205,11 @@ def parse(argv):
 
 def scene_parameters(args, run):
     """What makes two runs the same scene: a checkpoint of other parameters is refused."""
-    return {"run": run, "count": args.count, "seed": args.seed, "dt": args.dt, "duration": args.duration,
-            "normal": args.normal}
+    parameters = {"run": run, "count": args.count, "seed": args.seed, "dt": args.dt, "duration": args.duration,
+                  "normal": args.normal}
+    if args.energy and run in SHAPES:  # the box's work so far is in the checkpoint only if it was tracked
+        parameters["energy"] = True
+    return parameters
 
 
 def child_command(args, run, check):
@@ -199,6 +218,7 @@ def child_command(args, run, check):
                "--sample", str(args.sample), "--frames", str(args.frames), "--threads", str(args.threads),
                "--checkpoint-every", str(args.checkpoint_every), "--normal", args.normal, "--timing", args.timing,
                "--output", args.output]
+    command += ["--energy"] if args.energy else []
     return command + (["--resume"] if args.resume else []) + (["--check"] if check else [])
 
 
@@ -242,6 +262,7 @@ from roundedmesh.export import VtkSeries  # noqa: E402
 from roundedmesh.progress import Progress  # noqa: E402
 from roundedmesh_study import peers  # noqa: E402
 from roundedmesh_study.benchmarking import machine  # noqa: E402
+from roundedmesh_study.standing_still import ENERGY_KEYS  # noqa: E402
 
 PARTICLE = rm.HertzMaterial(young=peers.PARTICLE["young"], poisson=peers.PARTICLE["poisson"],
                             density=peers.PARTICLE["density"], damping=peers.DAMPING_CONSTANT)
@@ -347,7 +368,45 @@ def build(args, run):
     O.engines = ([PyRunner(command="s1_record()", iterPeriod=1), engines[0], box] + engines[1:] +
                  [PyRunner(command="s1_last_step_ends()", iterPeriod=max(args.steps - 1, 1), initRun=args.steps == 1)])
     O.tags[SCENE_TAG] = json.dumps(scene_parameters(args, run), sort_keys=True)
+    O.trackEnergy = args.energy and run in SHAPES
     return bodies, walls, box, description
+
+
+class EnergyBalance:
+    """The energy balance of a roundedmesh run (--energy): O.energy's terms (YADE's and the engine's) and the work the
+    moving box does on the bodies, which O.energy does not count (the box's walls are moved, not integrated), written
+    to energy.csv at each window's end (the module's documentation)."""
+
+    def __init__(self, walls, path, resumed_at):
+        self.walls = walls
+        self.box_work = float(O.tags[BOX_WORK_TAG]) if resumed_at else 0.0
+        kept = [row for row in _csv_rows(path) if int(row[0]) <= resumed_at] if resumed_at else []
+        self.rows = [[float(value) if value != "" else "" for value in row] for row in kept]
+        self.file = open(path, "w", newline="")
+        self.writer = csv.writer(self.file)
+        self.writer.writerows([ENERGY_FIELDS] + kept)
+
+    def add_step(self):
+        """Adds the box's work in the step just ended: minus the force on each wall (the engine's, still in O.forces)
+        dotted with the wall's displacement, its velocity (set at the step's start) times the step."""
+        self.box_work -= sum(O.forces.f(w, sync=True).dot(O.bodies[w].state.vel) for w in self.walls) * O.dt
+
+    def sample(self, done):
+        terms = dict(O.energy.items())
+        values = [terms.get(key, 0.0) for key in ENERGY_KEYS]
+        balance = sum(values) - self.box_work
+        dissipated = values[ENERGY_KEYS.index("rmNormDamp")] + values[ENERGY_KEYS.index("rmFrictDissip")]
+        row = [done, O.time, *values, self.box_work, balance, balance / dissipated if dissipated > 0 else ""]
+        self.rows.append(row)
+        self.writer.writerow(row)
+        self.file.flush()
+
+    def save(self):
+        """Before a checkpoint: the box's work so far goes with the scene."""
+        O.tags[BOX_WORK_TAG] = repr(self.box_work)
+
+    def close(self):
+        self.file.close()
 
 
 class Recorder:
@@ -356,6 +415,8 @@ class Recorder:
 
     def __init__(self, args, run, bodies, walls, box, series, resumed_at=0):
         self.args, self.run, self.bodies, self.walls, self.box, self.series = args, run, bodies, walls, box, series
+        self.energy = (EnergyBalance(walls, os.path.join(args.output, run, "energy.csv"), resumed_at)
+                       if args.energy and run in SHAPES else None)
         ends = set(range(args.sample, args.steps + 1, args.sample)) | {args.steps}
         if args.shaking_steps < args.steps:
             ends.add(args.shaking_steps)
@@ -392,6 +453,8 @@ class Recorder:
             self.deepest = max(self.deepest, statistics["deepest_pair_fraction"])
             for name in self.window_sums:
                 self.window_sums[name] += statistics[name]
+        if self.energy is not None and done > 0:  # before the box stops: this step moved it
+            self.energy.add_step()
         if clock is None and done in self.window_ends:
             clock = clocks()
         if done == 1:  # the bodies have not moved yet: a contact now is an overlap in the start
@@ -408,6 +471,8 @@ class Recorder:
         if done in self.frame_steps:
             self.series.write()
         if done % self.args.checkpoint_every == 0 and done < self.args.steps and self.failure is None:
+            if self.energy is not None:
+                self.energy.save()
             self.checkpoint()
         self.excluded += clocks() - begin
         if done in self.window_ends:  # the next window starts after this step's sampling, frame and checkpoint
@@ -441,6 +506,8 @@ class Recorder:
         self.rows.append(row)
         self.writer.writerow(row)
         self.file.flush()  # a run stopped early leaves every window so far
+        if self.energy is not None:
+            self.energy.sample(done)
         self.reporter.update(done - self.resumed_at)
         if len(self.rows) % 10 == 0 or done == self.args.steps:
             print(f"  t = {row[1]:.3f} s: box at {row[3] * 1e3:+.2f} mm, mean height {row[4]:.4f} m, max "
@@ -597,6 +664,10 @@ def run_one(args, run):
         recorder.record(recorder.last_step_end)
     run_seconds, run_cpu = time.perf_counter() - start, time.process_time() - start_cpu
     recorder.file.close()
+    if recorder.energy is not None:
+        recorder.energy.close()
+        if recorder.energy.rows:
+            plot_energy(os.path.join(folder, "energy.png"), recorder.energy.rows, args, run)
     if recorder.rows:
         plot_run(os.path.join(folder, "height.png"), recorder.rows, args, run)
         if run in SHAPES and args.timing == "stages":
@@ -642,6 +713,13 @@ def run_one(args, run):
           "ms/step, wall (CPU): shaking {:.2f} ({:.2f}), settling {:.2f} ({:.2f})".format(*shaking, *settling))
     print(f"final: mean height {heights.mean():.4f} m, max {heights.max():.4f} m above the floor; "
           f"P({SUBMERGED_HEIGHT:.2f} m) = {at_submerged:.1f} %; largest pair overlap {largest:.3f} r")
+    if recorder.energy is not None:
+        last = recorder.energy.rows[-1]
+        dissipated = last[ENERGY_FIELDS.index("normal_damping_J")] + last[ENERGY_FIELDS.index("friction_J")]
+        balance = last[ENERGY_FIELDS.index("balance_J")]
+        share = f"{balance / dissipated:+.2%} of the {dissipated:.4g} J" if dissipated > 0 else "nothing"
+        print(f"energy balance at the end: {balance:+.4g} J, {share} the damping and friction dissipated; the box did "
+              f"{last[ENERGY_FIELDS.index('box_work_J')]:+.4g} J of work (energy.csv, energy.png)")
     print(f"wrote height.csv, packing.csv, final_state.csv, timing.csv, height.png and vtk/{run}.pvd to {folder}")
     print(f"ParaView: open {os.path.join(folder, 'vtk', run + '.pvd')}, the run as a time series of {args.frames} "
           "frames (the bodies' surfaces; the contact force on each triangle is the cell data 'contact_force')")
@@ -664,6 +742,33 @@ def plot_run(path, rows, args, run):
              title=f"S1, {args.count} bodies, {run}, dt = {args.dt:g} s")
     axes.grid(alpha=0.3)
     axes.legend()
+    figure.tight_layout()
+    figure.savefig(path, dpi=120)
+    plt.close(figure)
+
+
+def plot_energy(path, rows, args, run):
+    """The energy balance's terms (left) and the balance itself against what was dissipated (right) over time."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    column = {name: np.array([r[k] if r[k] != "" else np.nan for r in rows], dtype=float)
+              for k, name in enumerate(ENERGY_FIELDS)}
+    t = column["time_s"]
+    figure, (terms, balance) = plt.subplots(1, 2, figsize=(11, 4.5))
+    for name, label in (("kinetic_J", "kinetic"), ("gravity_work_J", "potential (gravity_work)"),
+                        ("elastic_J", "elastic"), ("normal_damping_J", "dissipated by damping"),
+                        ("friction_J", "dissipated by friction"), ("box_work_J", "work of the box")):
+        terms.plot(t, column[name], label=label)
+    balance.plot(t, column["balance_J"], "k-", label="balance")
+    balance.plot(t, column["normal_damping_J"] + column["friction_J"], "C3:", label="dissipated")
+    for axes in (terms, balance):
+        axes.axvspan(0, min(SHAKING, t[-1]), color="0.5", alpha=0.08)
+        axes.set(xlabel="time [s]", ylabel="energy [J]", xlim=(0, t[-1]))
+        axes.grid(alpha=0.3)
+        axes.legend(fontsize=8)
+    terms.set_title(f"S1, {args.count} bodies, {run}, normal law '{args.normal}'")
+    balance.set_title(f"balance at the end: {column['balance_over_dissipated'][-1]:+.2%} of the dissipated")
     figure.tight_layout()
     figure.savefig(path, dpi=120)
     plt.close(figure)
