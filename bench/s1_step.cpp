@@ -26,7 +26,6 @@
 // (comma-separated, for larger machines), e.g. ROUNDEDMESH_BENCH_THREADS=1,2,4,8,16. The kernels run on the
 // processor's best vector unit, or the one named in ROUNDEDMESH_BENCH_TARGET, e.g. ROUNDEDMESH_BENCH_TARGET=SSE4.
 #include <benchmark/benchmark.h>
-#include <omp.h>
 
 #include <string>
 #include <vector>
@@ -74,9 +73,8 @@ void s1Step(benchmark::State& state, bool core, bool stages) {
                                                 : motion == 2 ? &scene().resting
                                                 : motion == 3 ? &scene().landing
                                                               : nullptr;
-  const int previous = omp_get_max_threads();
-  omp_set_num_threads(threads);
   ContactModel model = withFriction(scene().model, state.range(5));
+  model.options.threads = threads;
   if (state.range(2) > 0) model.skins.candidatesMin = model.skins.candidatesMax = 1e-4 * state.range(2);
   if (state.range(3) > 0) model.skins.candidateSteps = static_cast<Real>(state.range(3));
   if (state.range(4) > 0) model.skins.nearFactor = static_cast<Real>(state.range(4));
@@ -101,7 +99,6 @@ void s1Step(benchmark::State& state, bool core, bool stages) {
     times.pairs += data.times.pairs;
     times.reduction += data.times.reduction;
   }
-  omp_set_num_threads(previous);
   const auto perStep = benchmark::Counter::kAvgIterations;
   state.counters["body_pairs"] = benchmark::Counter(total.bodyPairs, perStep);
   state.counters["touching_pairs"] = benchmark::Counter(total.touchingPairs, perStep);

@@ -17,7 +17,6 @@
 //   build/bench/roundedmesh_scaling_bench --benchmark_format=json > scaling.json   (scripts/benchmarks/scaling.py
 //   runs it and writes doc/scaling.md's table, CSV and plots)
 #include <benchmark/benchmark.h>
-#include <omp.h>
 
 #include <cmath>
 #include <memory>
@@ -161,29 +160,28 @@ constexpr int kTimedSteps = 20;
 // Steps `scene` as the benchmark asks; `frame(step, data)` may change the states before each step.
 template <class Frame>
 void run(benchmark::State& state, const Scene& scene, const Frame& frame, int threads = 1) {
-  const int previous = omp_get_max_threads();
-  omp_set_num_threads(threads);
+  ContactModel model = scene.model;
+  model.options.threads = threads;
   ContactData data;
   data.resize(scene.model);
   data.bodyStates = scene.bodyStates;
   data.partnerStates = scene.partnerStates;
   data.timeStep = 1e-4;
-  for (int warmup = 0; warmup < 2; ++warmup) contactForces(scene.model, data);
+  for (int warmup = 0; warmup < 2; ++warmup) contactForces(model, data);
   long step = 0;
   while (step < kWarmupSteps) {
     frame(++step, data);
-    contactForces(scene.model, data);
+    contactForces(model, data);
   }
   ContactStatistics total;
   StageTimes times;
   for (auto _ : state) {
     frame(++step, data);
-    contactForces(scene.model, data);
+    contactForces(model, data);
     total += data.statistics;
     times.broadPhase += data.times.broadPhase;
     times.pairs += data.times.pairs;
   }
-  omp_set_num_threads(previous);
   report(state, scene, data, total, times);
 }
 

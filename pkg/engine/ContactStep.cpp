@@ -16,11 +16,12 @@ namespace {
 
 // Stage 3, every pair in parallel, each with its own list and spring -> data.pairResults (and data.pairContacts).
 void resolvePairs(const ContactModel& model, ContactData& data) {
-  if (data.geoms.size() < static_cast<size_t>(omp_get_max_threads())) data.geoms.resize(omp_get_max_threads());
+  const int threads = model.options.resolvedThreads();
+  if (data.geoms.size() < static_cast<size_t>(threads)) data.geoms.resize(threads);
   const int pairCount = static_cast<int>(data.pairs.size());
   data.pairResults.resize(pairCount);
   data.pairContacts.resize(data.keepTriangleContacts ? pairCount : 0);
-#pragma omp parallel for schedule(dynamic, 4) if (pairCount > 1)
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 4) if (pairCount > 1)
   for (int k = 0; k < pairCount; ++k) {
     const BodyPair& pair = data.pairs[k];
     std::vector<TriangleContact>* contacts = nullptr;

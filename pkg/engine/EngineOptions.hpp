@@ -39,7 +39,9 @@ struct EngineOptions {
 
   // Throws std::invalid_argument naming the option (as users write it) and the rule it breaks.
   void validate() const;
-  // The threads a step runs on (0 resolved as above).
+  // The threads a step runs on (0 resolved as above). The step's parallel regions name this count (num_threads)
+  // and leave the calling thread's OpenMP default alone: YADE sizes a scene's per-thread force buffers by that
+  // default when it makes the scene (O.load), and its own loops run on it, so changing it crashes YADE's engines.
   int resolvedThreads() const;
 
   bool operator==(const EngineOptions& o) const;

@@ -2,7 +2,6 @@
 // plane_contact, partner_contact, sphere_contact and body_contact (pkg/engine/PairEvaluation.hpp): arguments
 // checked and converted here.
 #include <boost/python.hpp>
-#include <omp.h>
 
 #include <chrono>
 #include <cmath>
@@ -77,7 +76,6 @@ class SceneContacts {
       return report;
     }
     takeSprings(omega);
-    omp_set_num_threads(model_.options.resolvedThreads());  // YADE's loop thread starts the step's parallel region
     const auto read = std::chrono::steady_clock::now();
     const StepReport r = contactStep(model_, data_);
     const auto computed = std::chrono::steady_clock::now();

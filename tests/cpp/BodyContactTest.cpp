@@ -3,7 +3,6 @@
 // phase against brute force, and the same result on any number of threads.
 #include <gtest/gtest.h>
 
-#include <omp.h>
 
 #include <cmath>
 #include <random>
@@ -160,12 +159,10 @@ TEST(BodyContact, SameResultOnAnyNumberOfThreads) {
       s.velocity = Vector3r(0.1 * i, -0.1 * j, 0);
       states.push_back(s);
     }
-  const int threads = omp_get_max_threads();
-  omp_set_num_threads(1);
+  model.options.threads = 1;
   const ContactData one = run(model, states);
-  omp_set_num_threads(2);
+  model.options.threads = 2;
   const ContactData two = run(model, states);
-  omp_set_num_threads(threads);
   ASSERT_GT(one.statistics.bodyPairs, 10);
   for (size_t b = 0; b < states.size(); ++b) {
     EXPECT_EQ(one.bodyWrenches[b].force, two.bodyWrenches[b].force);

@@ -3,7 +3,6 @@
 // triangle pair finds with the same criterion (Appendix B's tests; past kDeepestOverlap of the smaller body, both
 // caps reaching into the other body), with the same forces; and it gives the same result on 1 and 2 threads.
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cstring>
@@ -84,16 +83,15 @@ TEST(RecordedScene, EngineFindsWhatBruteForceFinds) {
 
 // The same contacts and bitwise the same wrenches on 1 and 2 threads, over steps that rebuild lists.
 TEST(RecordedScene, SameResultOnAnyNumberOfThreads) {
-  const int threads = omp_get_max_threads();
   std::vector<ContactData> runs(2);
   for (int n = 1; n <= 2; ++n) {
-    omp_set_num_threads(n);
+    ContactModel model = scene().model;
+    model.options.threads = n;
     for (int step = 0; step < 10; ++step) {
       scene().setStates(runs[n - 1], scene().shaking, step);
-      contactForces(scene().model, runs[n - 1]);
+      contactForces(model, runs[n - 1]);
     }
   }
-  omp_set_num_threads(threads);
   ASSERT_GT(runs[0].statistics.contacts(), 20000);
   EXPECT_EQ(runs[0].statistics.contacts(), runs[1].statistics.contacts());
   for (size_t b = 0; b < runs[0].bodyWrenches.size(); ++b) {
@@ -301,15 +299,15 @@ TEST(RecordedScene, NarrowPhaseInLanesIsOneAtATimeBitForBit) {
 // inside the pairs stage, read by another clock: their sum stays below its wall time, up to 50 microseconds of the
 // two clocks' disagreement and the pair loop's own work.
 TEST(RecordedScene, TimingTheStagesChangesNothing) {
-  const int threads = omp_get_max_threads();
-  omp_set_num_threads(1);
-  ContactModel timed = scene().model;
+  ContactModel untimed = scene().model;
+  untimed.options.threads = 1;
+  ContactModel timed = untimed;
   timed.options.timing = Timing::Stages;
   ContactData plain, measured;
   for (int step = 0; step < 4; ++step) {
     scene().setStates(plain, scene().shaking, step);
     scene().setStates(measured, scene().shaking, step);
-    contactForces(scene().model, plain);
+    contactForces(untimed, plain);
     contactForces(timed, measured);
     const PairStageTimes& none = plain.statistics.cpu;
     EXPECT_EQ(none.lists + none.nearSearch + none.narrowPhase + none.law + none.core, 0);
@@ -325,7 +323,6 @@ TEST(RecordedScene, TimingTheStagesChangesNothing) {
       EXPECT_EQ(plain.bodyWrenches[b].torque, measured.bodyWrenches[b].torque);
     }
   }
-  omp_set_num_threads(threads);
   EXPECT_GT(measured.statistics.nearPairsScanned, 0);  // the shaking rebuilds lists every step
   EXPECT_GT(measured.statistics.cpu.lists, 0);
 }
