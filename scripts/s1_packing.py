@@ -4,7 +4,7 @@ S1's lattice into a 0.40 m x 0.40 m box of five YADE Walls, the box moves vertic
 z_box(t) = A sin(2 pi t / T) (A = 0.025 m, T = 0.25 s) for three periods (0.75 s), then stands still; 1.35 s in
 all, 13,500 steps of 1e-4 s.
 
-    /usr/bin/python3 scripts/s1_packing.py [--shape gummy_bear|...|all] [--peers clumps level_sets]
+    /usr/bin/python3 scripts/s1_packing.py [--shape gummy_bear|...|all|grains] [--peers clumps level_sets]
         [--peers-only] [--count 250] [--seed 1] [--dt 1e-4] [--duration 1.35] [--sample 100] [--frames 14]
         [--threads 1] [--timing off|stages] [--energy] [--checkpoint-every 1000] [--resume] [--plot-only]
         [--output out/s1]
@@ -18,6 +18,10 @@ Runs, each in its own process and folder <output>/<run>:
                   inertia (set so; the mesh's own volume is 61, 88 and 97 % of it)
     pear, gummy_bear
                   Mesh.reference_shape (~486 and ~554 nodes asked)
+    spheroid, pill, tetra_grain
+                  the study grains of doc/speed-vs-error.md (roundedmesh_study.grains: a prolate spheroid, a
+                  capsule, a rounded tetrahedron), meshed with ~600 nodes and computed curvature, as their packings
+                  in bench/data are; not in the paper, so --shape all leaves them out and --shape grains runs them
     gummy_bear_clumps, gummy_bear_level_sets (--peers clumps level_sets)
                   YADE's own representations of the gummy bear on the same scene (roundedmesh_study.peers): 40-sphere
                   clumps of the shape's primitives and level-set bodies of its distance field (1 mm grid, 511
@@ -103,7 +107,11 @@ import time
 
 import numpy as np
 
-SHAPES = ("sphere", "icosphere12", "icosphere42", "icosphere162", "pear", "gummy_bear")
+PAPER_SHAPES = ("sphere", "icosphere12", "icosphere42", "icosphere162", "pear", "gummy_bear")  # --shape all
+# --shape grains: roundedmesh_study.grains.NAMES, named here so that this process, which only starts the runs, does not
+# load YADE (grains imports roundedmesh).
+GRAIN_SHAPES = ("spheroid", "pill", "tetra_grain")
+SHAPES = PAPER_SHAPES + GRAIN_SHAPES
 PEERS = ("clumps", "level_sets")
 PEER_SHAPE = "gummy_bear"
 ICOSPHERE_SUBDIVISIONS = {"icosphere12": 0, "icosphere42": 1, "icosphere162": 2}
@@ -133,14 +141,16 @@ BOX_WORK_TAG = "s1_packing.box_work"  # O.tags key of the work the box has done 
 
 
 def run_names(shape, peers, peers_only):
-    shapes = [] if peers_only else (list(SHAPES) if shape == "all" else [shape])
+    groups = {"all": list(PAPER_SHAPES), "grains": list(GRAIN_SHAPES)}
+    shapes = [] if peers_only else groups.get(shape, [shape])
     return shapes + [f"{PEER_SHAPE}_{peer}" for peer in peers]
 
 
 def parse(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--shape", default="gummy_bear", help=f"one of {', '.join(SHAPES)}, or all (default gummy_bear)")
+    parser.add_argument("--shape", default="gummy_bear",
+                        help=f"one of {', '.join(SHAPES)}, all (the paper's) or grains (default gummy_bear)")
     parser.add_argument("--peers", nargs="*", default=[], metavar="PEER",
                         help=f"YADE's own representations of the gummy bear to run too: {', '.join(PEERS)}")
     parser.add_argument("--peers-only", action="store_true", help="run the peers only, not --shape")
@@ -167,8 +177,8 @@ def parse(argv):
     parser.add_argument("--run", help=argparse.SUPPRESS)    # one run, in this process (how the script calls itself)
     parser.add_argument("--check", action="store_true", help=argparse.SUPPRESS)  # with --run: checks only
     args = parser.parse_args(argv)
-    if args.shape != "all" and args.shape not in SHAPES:
-        parser.error(f"--shape {args.shape}: unknown shape; use one of {', '.join(SHAPES)} or all")
+    if args.shape not in ("all", "grains") and args.shape not in SHAPES:
+        parser.error(f"--shape {args.shape}: unknown shape; use one of {', '.join(SHAPES)}, all or grains")
     for peer in args.peers:
         if peer not in PEERS:
             parser.error(f"--peers {peer}: unknown peer; use {' and/or '.join(PEERS)}")
@@ -260,7 +270,7 @@ from yade.minieigenHP import Quaternion, Vector3  # noqa: E402
 import roundedmesh as rm  # noqa: E402
 from roundedmesh.export import VtkSeries  # noqa: E402
 from roundedmesh.progress import Progress  # noqa: E402
-from roundedmesh_study import peers  # noqa: E402
+from roundedmesh_study import grains, peers  # noqa: E402
 from roundedmesh_study.benchmarking import machine  # noqa: E402
 from roundedmesh_study.standing_still import ENERGY_KEYS  # noqa: E402
 
@@ -287,6 +297,8 @@ def lattice_poses(count, seed):
 def make_mesh(shape):
     if shape in ICOSPHERE_SUBDIVISIONS:
         return rm.Mesh.icosphere(RADIUS, ICOSPHERE_SUBDIVISIONS[shape])
+    if shape in GRAIN_SHAPES:
+        return grains.grain(shape).mesh(grains.REFERENCE_NODES)
     return rm.Mesh.reference_shape(shape)
 
 

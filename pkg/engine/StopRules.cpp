@@ -66,9 +66,10 @@ std::vector<StopReason> checkStopRules(const ContactModel& model, ContactData& d
   std::vector<StopReason> stops;
   std::vector<PairRecord>& records = data.pairRecords;
   const int pairCount = static_cast<int>(data.pairs.size());
+  const int threads = model.options.resolvedThreads();
   records.resize(pairCount);
   // Each pair's record alone, in parallel (a Facet's side costs it its corners); the searches below in order.
-#pragma omp parallel for num_threads(model.options.resolvedThreads()) schedule(static) if (pairCount > 1)
+#pragma omp parallel for num_threads(threads) schedule(static) if (pairCount > 1)
   for (int k = 0; k < pairCount; ++k) {
     const BodyPair& pair = data.pairs[k];
     PairRecord& r = records[k];
@@ -99,7 +100,7 @@ std::vector<StopReason> checkStopRules(const ContactModel& model, ContactData& d
   // Every flat partner a body was near in the last step, whether or not their bounds still overlap.
   const int lastCount = static_cast<int>(last.size());
   std::vector<char> through(lastCount, 0);
-#pragma omp parallel for num_threads(model.options.resolvedThreads()) schedule(static) if (lastCount > 1)
+#pragma omp parallel for num_threads(threads) schedule(static) if (lastCount > 1)
   for (int k = 0; k < lastCount; ++k) {
     const PairRecord& r = last[k];
     if (!r.flat) continue;

@@ -57,7 +57,7 @@ from yade import (Bo1_LevelSet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, Ig2_LevelSe
                   Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin, LevelSet, RegularGrid)
 from yade.minieigenHP import Matrix3, Quaternion, Vector3, Vector3i
 
-from roundedmesh import HertzMaterial, scene, shapes
+from roundedmesh import HertzMaterial, Mesh, scene, shapes
 
 from . import grains
 from .mesh_distance import signed_distance
@@ -71,6 +71,9 @@ BOX = {"young": 5e6, "poisson": 0.4, "density": 2000.0}        # density unused:
 DAMPING_CONSTANT = 0.01        # A of Eq. 7 [s]
 GRAVITY = 9.81                 # [m/s^2]
 TIME_STEP = 1e-4               # [s]
+# S1's icospheres with a settled packing (bench/data): rm.Mesh.icosphere(RADIUS, subdivisions) at any `nodes`, the body
+# with the mesh's own mass (not the sphere's of scripts/s1_packing.py's icosphere runs).
+ICOSPHERES = {"icosphere162": 2}
 CLUMP_COUNTS = (10, 20, 40, 80)  # sphere counts of the speed-against-error study
 
 
@@ -81,12 +84,20 @@ def body_frame(name, nodes=None, curvature="computed"):
     point = R body point + centroid = scale x. curvature only sets the mesh's per-triangle curvatures (as for
     reference_shape); the vertices, scale and frame are the same for both. For a study grain (grains.NAMES) the
     mesh Grain.mesh(nodes, curvature: 'computed' or 'exact'), default grains.REFERENCE_NODES nodes, and the
-    grain's own frame as the input frame (scale 1)."""
+    grain's own frame as the input frame (scale 1); for an icosphere (ICOSPHERES) its mesh, with scale 1."""
+    if name in ICOSPHERES:
+        mesh = _icosphere(name)
+        return mesh, 1.0, np.array(mesh.orientation.toRotationMatrix()), np.array(mesh.centroid)
     if name in grains.NAMES:
         mesh = grains.grain(name).mesh(grains.REFERENCE_NODES if nodes is None else nodes, curvature)
         return mesh, 1.0, np.array(mesh.orientation.toRotationMatrix()), np.array(mesh.centroid)
     mesh, scale = shapes.mesh_with_scale(name, nodes, curvature)
     return mesh, scale, np.array(mesh.orientation.toRotationMatrix()), np.array(mesh.centroid)
+
+
+@functools.lru_cache(maxsize=None)
+def _icosphere(name):
+    return Mesh.icosphere(RADIUS, ICOSPHERES[name])
 
 
 def _chain_counts(lengths, radii, budget):
@@ -295,17 +306,25 @@ def build_rounded(poses, name="gummy_bear", nodes=None, **engine_options):
     (Eq. 7 damping A on both) and the roundedmesh engine (roundedmesh.engine's options, e.g. regime): the
     representation the others are compared with. The poses are of the default mesh's principal frame; a mesh of
     other `nodes` has its own (its axes may even be ordered otherwise), so each body is placed where its smooth
-    shape coincides with the default mesh's. Returns the bodies' ids."""
+    shape coincides with the default mesh's. name 'sphere': a sphere body of radius RADIUS (scene.add_sphere) per
+    pose. Returns the bodies' ids."""
     O.reset()
-    mesh, _, own_axes, own_centroid = body_frame(name, nodes)
-    _, _, axes, centroid = body_frame(name)
-    turn = Quaternion(Matrix3(*(axes.T @ own_axes).flatten()))  # this mesh's frame -> the default mesh's
-    shift = axes.T @ (own_centroid - centroid)                  # its origin in the default mesh's frame [m]
     particle = HertzMaterial(damping=DAMPING_CONSTANT, **PARTICLE)
+    if name == "sphere":
+        def add(position, ori):
+            return scene.add_sphere(position, RADIUS, particle, ori=ori)
+    else:
+        mesh, _, own_axes, own_centroid = body_frame(name, nodes)
+        _, _, axes, centroid = body_frame(name)
+        turn = Quaternion(Matrix3(*(axes.T @ own_axes).flatten()))  # this mesh's frame -> the default mesh's
+        shift = axes.T @ (own_centroid - centroid)                  # its origin in the default mesh's frame [m]
+
+        def add(position, ori):
+            return scene.add_body(mesh, position + ori * Vector3(*shift), ori * turn, particle)
     ids = []
     for pose in poses:
         position, ori, velocity, angular = _pose(pose)
-        body = scene.add_body(mesh, position + ori * Vector3(*shift), ori * turn, particle)
+        body = add(position, ori)
         scene.set_velocity(body, velocity, angular)
         ids.append(body)
     for wall in (utils.wall(0, axis=2, sense=1), utils.wall(-HALF_BASE, axis=0, sense=1),

@@ -16,14 +16,16 @@ import os
 import numpy as np
 
 ORDER = ("sphere", "icosphere12", "icosphere42", "icosphere162", "pear", "gummy_bear", "gummy_bear_clumps",
-         "gummy_bear_level_sets")
+         "gummy_bear_level_sets", "spheroid", "pill", "tetra_grain")
 LABELS = {"sphere": "perfect spheres", "icosphere12": "icospheres, 12 nodes", "icosphere42": "icospheres, 42 nodes",
           "icosphere162": "icospheres, 162 nodes", "pear": "pears", "gummy_bear": "gummy bears",
           "gummy_bear_clumps": "gummy bears, YADE 40-sphere clumps",
-          "gummy_bear_level_sets": "gummy bears, YADE level sets"}
+          "gummy_bear_level_sets": "gummy bears, YADE level sets", "spheroid": "spheroids", "pill": "pills",
+          "tetra_grain": "rounded tetrahedral grains"}
 STYLES = {"sphere": ("k", "-"), "icosphere12": ("C0", "--"), "icosphere42": ("C1", "--"),
           "icosphere162": ("C2", "--"), "pear": ("C3", "-"), "gummy_bear": ("C4", "-"),
-          "gummy_bear_clumps": ("C4", ":"), "gummy_bear_level_sets": ("C4", "-.")}
+          "gummy_bear_clumps": ("C4", ":"), "gummy_bear_level_sets": ("C4", "-."), "spheroid": ("C5", "-"),
+          "pill": ("C6", "-"), "tetra_grain": ("C7", "-")}
 HALF_BASE = 0.20  # the box's half width [m]
 
 
@@ -102,10 +104,13 @@ def drawn_mesh(run, radius):
     """(vertices (n, 3) [m], triangles (m, 3)) drawn for a body of `run`, in its principal frame: the run's own
     mesh; for perfect spheres a 642-node icosphere; for YADE's gummy bears the bear's mesh at the body's pose."""
     import roundedmesh as rm
+    from . import grains
     if run == "sphere":
         mesh = rm.Mesh.icosphere(radius, 3)
     elif run.startswith("icosphere"):
         mesh = rm.Mesh.icosphere(radius, {"icosphere12": 0, "icosphere42": 1, "icosphere162": 2}[run])
+    elif run in grains.NAMES:
+        mesh = grains.grain(run).mesh(grains.REFERENCE_NODES)
     else:
         mesh = rm.Mesh.reference_shape("gummy_bear" if run.startswith("gummy_bear") else run)
     return np.asarray(mesh.vertices), np.asarray(mesh.triangles)

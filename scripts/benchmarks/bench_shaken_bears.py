@@ -10,11 +10,13 @@ engine split into its C++ step, its Python wrapper and the PyRunner that calls i
         [--settle-dt 5e-4] [--settle-damping 0.3]
         [--threads 1 2] [--blocks 5] [--block-steps 200] [--warmup 100]
 
---shape: the bodies, 'gummy_bear' (Mesh.reference_shape("gummy_bear", 554)) or a study grain of the
+--shape: the bodies, 'gummy_bear' (Mesh.reference_shape("gummy_bear", 554)), a study grain of the
 speed-against-error study (roundedmesh_study.grains.NAMES: 'spheroid', 'pill', 'tetra_grain'), whose mesh is
-grains.grain(name).mesh(grains.REFERENCE_NODES = 600), curvature computed: the same lattice, jitter, random
-orientations (--seed), materials, box and gravity, so that every shape's packing is S1's. The default output
-folder is out/bench_shaken_bears for the bear and out/bench_shaken_bears_<shape> for a grain.
+grains.grain(name).mesh(grains.REFERENCE_NODES = 600), curvature computed, or another shape of S1: 'pear'
+(Mesh.reference_shape("pear"), 486 nodes), 'icosphere162' (Mesh.icosphere(0.025, 2), its mesh's own mass) or
+'sphere' (sphere bodies of 0.025 m, rm.add_sphere): the same lattice, jitter, random orientations (--seed),
+materials, box and gravity, so that every shape's packing is S1's. The default output
+folder is out/bench_shaken_bears for the bear and out/bench_shaken_bears_<shape> for any other shape.
 --settle-only: settle (or reuse the saved scene) and describe it, without the measurements: what
 scripts/benchmarks/record_s1_scene.py needs to write the packing (bench/data/s1_settled_<shape>.csv).
 
@@ -29,7 +31,7 @@ Writes to the output folder:
     settling.csv        every 100 steps of settling: wall time, mean / max height and speed, contact counts
     settling.png        mean height vs time, and wall time per step and contacts vs time
     timing.csv          per thread count: median ms/step over the blocks, and the split between engines
-The thread count of the roundedmesh engine follows OpenMP (omp_get_max_threads), as YADE's own engines do:
+The thread count of the roundedmesh engine follows OMP_NUM_THREADS, as YADE's own engines do:
 each measurement runs this script again with --measure and OMP_NUM_THREADS set.
 """
 import argparse
@@ -50,7 +52,7 @@ from yade.minieigenHP import Quaternion
 import roundedmesh as rm
 import roundedmesh.scene  # noqa: F401  (the engine's step, wrapped for timing in --measure)
 from roundedmesh.progress import Progress
-from roundedmesh_study import benchmarking, grains
+from roundedmesh_study import benchmarking, grains, peers
 from roundedmesh_study.benchmarking import machine
 
 # Scene S1 (doc/scenes.md); the box stands still here.
@@ -63,16 +65,14 @@ PARTICLE = rm.HertzMaterial(young=1e6, poisson=0.4, density=2000, damping=0.01)
 BOX = rm.HertzMaterial(young=5e6, poisson=0.4, density=2000, damping=0.01)   # density unused: walls are fixed
 SAMPLE = 100                        # steps between samples while settling
 RESULT = "RESULT "                  # prefix of the --measure process's result line
-SHAPES = ("gummy_bear",) + grains.NAMES
+SHAPES = ("gummy_bear",) + grains.NAMES + ("pear", "icosphere162", "sphere")
 TAG = "bench_shaken_bears.settled"  # O.tags key of the saved scene's settling record (JSON)
 
 
 def shape_mesh(shape):
-    """The mesh every body of `shape` shares: the bear's paper mesh (554 nodes asked, 563 made) or a grain's
-    reference mesh (module docstring), in its principal frame, which the bodies' states are of."""
-    if shape == "gummy_bear":
-        return rm.Mesh.reference_shape("gummy_bear", 554)
-    return grains.grain(shape).mesh(grains.REFERENCE_NODES)
+    """The mesh every body of `shape` shares (module docstring), in its principal frame, which the bodies' states
+    are of; None for spheres."""
+    return None if shape == "sphere" else peers.body_frame(shape)[0]
 
 
 def build(count, dt, seed, shape="gummy_bear"):
@@ -89,7 +89,8 @@ def build(count, dt, seed, shape="gummy_bear"):
         pos += rng.uniform(-JITTER, JITTER, 3)
         ori = Quaternion(*rng.normal(size=4))  # uniformly random rotation
         ori.normalize()
-        bears.append(rm.add_body(mesh, tuple(pos), ori, PARTICLE))
+        bears.append(rm.add_sphere(tuple(pos), RADIUS, PARTICLE, ori=ori) if mesh is None else
+                     rm.add_body(mesh, tuple(pos), ori, PARTICLE))
     walls = [utils.wall(0, axis=2, sense=1),                    # bottom, facing +z
              utils.wall(-HALF_BASE, axis=0, sense=1), utils.wall(HALF_BASE, axis=0, sense=-1),
              utils.wall(-HALF_BASE, axis=1, sense=1), utils.wall(HALF_BASE, axis=1, sense=-1)]
@@ -109,7 +110,7 @@ def build(count, dt, seed, shape="gummy_bear"):
 
 
 def bear_ids():
-    return sorted(rm.rounded_bodies())
+    return sorted([*rm.rounded_bodies(), *rm.sphere_bodies()])
 
 
 def kinematics(ids):
@@ -146,8 +147,9 @@ def settle(args, path):
         O.dt = args.settle_dt
     newton.damping = args.settle_damping
     max_steps = int(round(args.max_time / O.dt))
-    print(f"settling {len(bears)} {args.shape} bodies ({len(shape_mesh(args.shape).vertices)} nodes "
-          f"each): until the mean speed is below {args.settled_speed:g} m/s (after {args.min_time:g} s), "
+    mesh = shape_mesh(args.shape)
+    nodes = "sphere bodies" if mesh is None else f"{len(mesh.vertices)} nodes each"
+    print(f"settling {len(bears)} {args.shape} bodies ({nodes}): until the mean speed is below {args.settled_speed:g} m/s (after {args.min_time:g} s), "
           f"at most {args.max_time:g} s = {max_steps} steps of {O.dt:g} s, NewtonIntegrator damping "
           f"{newton.damping:g}", flush=True)
     rows = []
@@ -297,7 +299,8 @@ def describe_settled(path):
     ids = bear_ids()
     positions, speeds = kinematics(ids)
     z = positions[:, 2]
-    volume = rm.rounded_bodies()[ids[0]].volume
+    meshes = rm.rounded_bodies()
+    volume = meshes[ids[0]].volume if ids[0] in meshes else 4 / 3 * math.pi * RADIUS ** 3
     info = json.loads(O.tags[TAG]) if O.tags.has_key(TAG) else {}
     print(f"\nsettled scene {path}: {len(ids)} {info.get('shape', 'gummy_bear')} bodies, t = {O.time:.4f} s "
           f"({O.iter} steps of "
@@ -311,7 +314,8 @@ def describe_settled(path):
           ", ".join(f"h={h:.2f} m: {packing_factor(z, volume, h):.1f}" for h in heights))
     print(f"  solid volume {len(ids) * volume * 1e3:.3f} L, a solid layer {len(ids) * volume / (2 * HALF_BASE) ** 2:.4f} m "
           f"thick over the base")
-    pair_analysis(ids)
+    if ids[0] in meshes:  # the meshes' pairs, one at a time
+        pair_analysis(ids)
     return len(ids)
 
 

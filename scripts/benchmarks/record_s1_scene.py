@@ -26,10 +26,11 @@ The landing window comes from a checkpoint of scripts/s1_packing.py (seed 1, the
     /usr/bin/python3 scripts/s1_packing.py --threads 2 --duration 0.4501 --checkpoint-every 500 --output out/s1_landing
     /usr/bin/python3 scripts/benchmarks/record_s1_scene.py --landing out/s1_landing/gummy_bear/checkpoint.yade.gz
 
-A packing of a study grain (roundedmesh_study.grains.NAMES), settled by bench_shaken_bears.py --shape <name>, is
-written alone, as bench/data/s1_settled_<name>.csv (its 'shape' column the grain's name): the speed-against-error
-study times YADE's peers at its poses (scripts/benchmarks/bench_s1_peers.py --shape <name>); the mesh file and the
-trajectories are the C++ benchmark's, which runs the bear only.
+A packing of a study grain (roundedmesh_study.grains.NAMES) or of S1's other shapes (pear, icosphere162, sphere),
+settled by bench_shaken_bears.py --shape <name>, is written alone, as bench/data/s1_settled_<name>.csv (its 'shape'
+column the shape's name): the speed-against-error study times YADE's peers at a grain's poses
+(scripts/benchmarks/bench_s1_peers.py --shape <name>), and scripts/validation/standing_still.py restarts every
+shape's packing; the mesh file and the trajectories are the C++ benchmark's, which runs the bear only.
 
     OMP_NUM_THREADS=2 /usr/bin/python3 scripts/benchmarks/bench_shaken_bears.py --shape spheroid --rebuild \
         --settle-dt 5e-4 --settle-damping 0.3 --settle-only
@@ -109,8 +110,10 @@ def write_settled(bears, path, shape="gummy_bear", made_by=()):
         plural = "gummy bears" if shape == "gummy_bear" else f"{shape} bodies"
         f.write(f"# S1 settled packing of {len(bears)} {plural} (doc/scenes.md), t = {O.time:.6g} s, "
                 f"dt = {O.dt:g} s; written by scripts/benchmarks/record_s1_scene.py\n")
-        mesh = ("bench/data/gummy_bear.mesh" if shape == "gummy_bear" else
-                f"roundedmesh_study.grains.grain({shape!r}).mesh({grains.REFERENCE_NODES}), curvature computed")
+        mesh = {"gummy_bear": "bench/data/gummy_bear.mesh", "pear": "Mesh.reference_shape('pear'), 486 nodes asked",
+                "icosphere162": "Mesh.icosphere(0.025, 2), the mesh's own mass",
+                "sphere": "a sphere body of radius 0.025 m, rm.add_sphere"}.get(
+                    shape, f"roundedmesh_study.grains.grain({shape!r}).mesh({grains.REFERENCE_NODES}), curvature computed")
         f.write(f"# shape: {shape} ({mesh}) or wall<axis><sense> (a YADE Wall); quaternion body -> global, of the "
                 "mesh's principal frame\n")
         for line in made_by:
@@ -198,7 +201,7 @@ def main(argv):
     os.makedirs(args.output, exist_ok=True)
     O.load(args.settled)
     meshes = rm.rounded_bodies()
-    bears = sorted(meshes)
+    bears = sorted([*meshes, *rm.sphere_bodies()])
     record = settling_record()
     shape = record.get("shape", "gummy_bear")
     made_by = [f"settled by: {record['command']}" if "command" in record else

@@ -144,6 +144,21 @@ def test_perfect_spheres_rest_on_the_floor_through_roundedmesh(tmp_path):
     assert sorted(d.get("part") for d in datasets) == ["0", "1"]
 
 
+# The study grains as S1's bodies (--shape grains): each falls in the box and is drawn in Fig. 10; the names are
+# the study's (the script names them itself, so as not to load YADE before it starts the runs).
+@pytest.mark.slow
+def test_the_study_grains_run_as_s1_shapes(tmp_path):
+    from roundedmesh_study import grains
+    out = run("--shape", "grains", "--count", "2", "--duration", "0.01", "--frames", "1", "--output", str(tmp_path))
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert sorted(p.name for p in tmp_path.iterdir() if p.is_dir()) == sorted(grains.NAMES)
+    for name in grains.NAMES:
+        last = rows(tmp_path / name / "height.csv")[-1]
+        assert int(last["bodies"]) == 2 and int(last["outside"]) == 0, (name, last)
+    assert [r["run"] for r in rows(tmp_path / "summary.csv")] == list(grains.NAMES)
+    assert (tmp_path / "fig10_packings.png").stat().st_size > 0
+
+
 # One step of 4 gummy bears, as rounded bodies and as YADE's 40-sphere clumps: every representation starts from
 # S1's lattice with the same jitter and orientations. A clump's centre is its spheres' union's, within 0.3 mm of
 # the bear's (roundedmesh_study.peers); one step of free fall moves both alike (g dt^2 = 1e-7 m).

@@ -263,34 +263,36 @@ def test_quick_study_runs_and_writes_the_table(tmp_path):
 
 
 @pytest.mark.slow
-def test_a_grain_settles_into_s1_and_its_packing_is_written_as_the_peers_read_it(tmp_path):
-    """bench_shaken_bears.py --shape then record_s1_scene.py, on 4 pills for 20 steps (seconds): the packing alone,
-    as s1_settled_pill.csv, its shape column the grain's name, the commands in its header, and
-    bench_s1_peers.read_poses takes it for --shape pill and refuses it for the bear."""
+@pytest.mark.parametrize("shape", ["pill", "sphere"])
+def test_a_grain_settles_into_s1_and_its_packing_is_written_as_the_peers_read_it(tmp_path, shape):
+    """bench_shaken_bears.py --shape then record_s1_scene.py, on 4 pills (a study grain) or 4 sphere bodies (S1's
+    perfect spheres, which have no mesh) for 20 steps (seconds): the packing alone, as s1_settled_<shape>.csv, its
+    shape column the shape's name, the commands in its header, and bench_s1_peers.read_poses takes it for --shape
+    <shape> and refuses it for the bear."""
     env = {**os.environ, "OMP_NUM_THREADS": "1"}
-    settle = ["/usr/bin/python3", os.path.join(BENCHMARKS, "bench_shaken_bears.py"), "--shape", "pill", "--count", "4",
+    settle = ["/usr/bin/python3", os.path.join(BENCHMARKS, "bench_shaken_bears.py"), "--shape", shape, "--count", "4",
               "--settle-dt", "5e-4", "--settle-damping", "0.3", "--max-time", "0.01", "--min-time", "0.01",
               "--settle-only", "--output", str(tmp_path)]
     out = subprocess.run(settle, capture_output=True, text=True, env=env)
     assert out.returncode == 0, out.stdout + out.stderr
-    assert "settling 4 pill bodies" in out.stdout and "measuring" not in out.stdout
+    assert f"settling 4 {shape} bodies" in out.stdout and "measuring" not in out.stdout
     record = ["/usr/bin/python3", os.path.join(BENCHMARKS, "record_s1_scene.py"), "--settled",
               str(tmp_path / "settled.yade.gz"), "--output", str(tmp_path)]
     out = subprocess.run(record, capture_output=True, text=True, env=env)
     assert out.returncode == 0, out.stdout + out.stderr
-    assert sorted(p.name for p in tmp_path.glob("*.csv")) == ["s1_settled_pill.csv", "settling.csv"]  # no bear files
-    text = (tmp_path / "s1_settled_pill.csv").read_text()
+    assert sorted(p.name for p in tmp_path.glob("*.csv")) == [f"s1_settled_{shape}.csv", "settling.csv"]  # no bear files
+    text = (tmp_path / f"s1_settled_{shape}.csv").read_text()
     comments = [line for line in text.splitlines() if line.startswith("#")]
-    assert any("settled by:" in line and "--shape pill" in line for line in comments)
+    assert any("settled by:" in line and f"--shape {shape}" in line for line in comments)
     assert any("written by:" in line and "record_s1_scene.py" in line for line in comments)
-    with open(tmp_path / "s1_settled_pill.csv", newline="") as f:
+    with open(tmp_path / f"s1_settled_{shape}.csv", newline="") as f:
         shapes = [row["shape"] for row in csv.DictReader(line for line in f if not line.startswith("#"))]
-    assert shapes[:4] == ["pill"] * 4 and all(s.startswith("wall") for s in shapes[4:]) and len(shapes) == 9
-    poses = bench_s1_peers.read_poses(str(tmp_path / "s1_settled_pill.csv"), "pill")
+    assert shapes[:4] == [shape] * 4 and all(s.startswith("wall") for s in shapes[4:]) and len(shapes) == 9
+    poses = bench_s1_peers.read_poses(str(tmp_path / f"s1_settled_{shape}.csv"), shape)
     assert len(poses) == 4 and all(0 < p[0][2] < 0.1 for p in poses)   # the lowest layer, still in the air
     with pytest.raises(SystemExit):
-        bench_s1_peers.read_poses(str(tmp_path / "s1_settled_pill.csv"), "gummy_bear")
-    assert bench_s1_peers.default_poses("pill") == os.path.join("bench", "data", "s1_settled_pill.csv")
+        bench_s1_peers.read_poses(str(tmp_path / f"s1_settled_{shape}.csv"), "gummy_bear")
+    assert bench_s1_peers.default_poses(shape) == os.path.join("bench", "data", f"s1_settled_{shape}.csv")
 
 
 def test_costs_leave_out_a_configuration_whose_packing_blew_up():

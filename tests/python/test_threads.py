@@ -54,6 +54,7 @@ from yade import (O, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter, Ig2_Sphere_S
 viscel = O.materials.append(ViscElMat(tc=0.01, en=0.3, et=1.0, density=2000, frictionAngle=0.3))
 rubber = rm.HertzMaterial(young=1e6, poisson=0.4, density=1000, damping=1e-3)
 rm.add_body(rm.Mesh.icosphere(0.01, 1), pos=(0, 0, 0.0099), material=rubber)
+rm.add_body(rm.Mesh.icosphere(0.01, 1), pos=(0.0199, 0, 0.0099), material=rubber)  # two pairs at least: a parallel loop
 floor = O.bodies.append(utils.wall(0, axis=2, sense=1, material=viscel))
 rm.assign_material(floor, rubber)
 for i in range(40):
@@ -72,7 +73,7 @@ if "{then}" == "load":
 else:
     for _ in range(200):
         O.step()
-print("DONE", rm.statistics()["threads"], sum(1 for i in O.interactions if i.isReal))
+print("DONE", rm.statistics()["threads"], sum(1 for i in O.interactions if i.isReal), rm.statistics()["body_pairs"])
 """
 
 
@@ -92,3 +93,4 @@ def test_yade_engines_beside_ours_on_another_thread_count(tmp_path, environment,
     assert done, out.stdout + out.stderr
     assert int(done[-1][1]) == threads
     assert int(done[-1][2]) >= 40  # YADE's law had contacts to write forces for
+    assert int(done[-1][3]) >= 3   # and the engine's loop more than one pair to share out
