@@ -114,7 +114,6 @@ GRAIN_SHAPES = ("spheroid", "pill", "tetra_grain")
 SHAPES = PAPER_SHAPES + GRAIN_SHAPES
 PEERS = ("clumps", "level_sets")
 PEER_SHAPE = "gummy_bear"
-ICOSPHERE_SUBDIVISIONS = {"icosphere12": 0, "icosphere42": 1, "icosphere162": 2}
 SHAKING = 0.75  # three periods of T = 0.25 s [s]
 RADIUS = 0.025                        # volume-equivalent radius r [m]
 VOLUME = 4 / 3 * math.pi * RADIUS ** 3  # every body's volume V_p [m^3]
@@ -295,8 +294,8 @@ def lattice_poses(count, seed):
 
 
 def make_mesh(shape):
-    if shape in ICOSPHERE_SUBDIVISIONS:
-        return rm.Mesh.icosphere(RADIUS, ICOSPHERE_SUBDIVISIONS[shape])
+    if shape in peers.ICOSPHERES:
+        return rm.Mesh.icosphere(RADIUS, peers.ICOSPHERES[shape])
     if shape in GRAIN_SHAPES:
         return grains.grain(shape).mesh(grains.REFERENCE_NODES)
     return rm.Mesh.reference_shape(shape)
@@ -329,7 +328,7 @@ def build_roundedmesh(run, poses, normal="pressure", timing="off"):
             bodies.append(rm.add_sphere(position, RADIUS, PARTICLE, ori=ori))
         else:
             bodies.append(rm.add_body(mesh, position, ori, PARTICLE))
-            if run in ICOSPHERE_SUBDIVISIONS:
+            if run in peers.ICOSPHERES:
                 give_sphere_mass(bodies[-1])
     walls = [O.bodies.append(wall) for wall in box_walls()]
     for wall in walls:
@@ -337,7 +336,7 @@ def build_roundedmesh(run, poses, normal="pressure", timing="off"):
     O.engines = [ForceResetter(), rm.engine(normal=normal, timing=timing), NewtonIntegrator(gravity=(0, 0, -GRAVITY), damping=0)]
     if mesh is None:
         return bodies, walls, f"analytic spheres of radius {RADIUS} m"
-    volume = (f"the sphere's mass; the mesh's volume {mesh.volume:.6g} m^3" if run in ICOSPHERE_SUBDIVISIONS
+    volume = (f"the sphere's mass; the mesh's volume {mesh.volume:.6g} m^3" if run in peers.ICOSPHERES
               else f"volume {mesh.volume:.6g} m^3")
     return bodies, walls, f"{len(mesh.vertices)} nodes, {len(mesh.triangles)} triangles, {volume}"
 

@@ -71,9 +71,9 @@ BOX = {"young": 5e6, "poisson": 0.4, "density": 2000.0}        # density unused:
 DAMPING_CONSTANT = 0.01        # A of Eq. 7 [s]
 GRAVITY = 9.81                 # [m/s^2]
 TIME_STEP = 1e-4               # [s]
-# S1's icospheres with a settled packing (bench/data): rm.Mesh.icosphere(RADIUS, subdivisions) at any `nodes`, the body
-# with the mesh's own mass (not the sphere's of scripts/s1_packing.py's icosphere runs).
-ICOSPHERES = {"icosphere162": 2}
+# S1's icospheres: rm.Mesh.icosphere(RADIUS, subdivisions), whatever `nodes` says. Here a body has the mesh's own mass
+# (scripts/s1_packing.py gives its icosphere runs the sphere's).
+ICOSPHERES = {"icosphere12": 0, "icosphere42": 1, "icosphere162": 2}
 CLUMP_COUNTS = (10, 20, 40, 80)  # sphere counts of the speed-against-error study
 
 

@@ -104,11 +104,11 @@ def drawn_mesh(run, radius):
     """(vertices (n, 3) [m], triangles (m, 3)) drawn for a body of `run`, in its principal frame: the run's own
     mesh; for perfect spheres a 642-node icosphere; for YADE's gummy bears the bear's mesh at the body's pose."""
     import roundedmesh as rm
-    from . import grains
+    from . import grains, peers
     if run == "sphere":
         mesh = rm.Mesh.icosphere(radius, 3)
-    elif run.startswith("icosphere"):
-        mesh = rm.Mesh.icosphere(radius, {"icosphere12": 0, "icosphere42": 1, "icosphere162": 2}[run])
+    elif run in peers.ICOSPHERES:
+        mesh = rm.Mesh.icosphere(radius, peers.ICOSPHERES[run])
     elif run in grains.NAMES:
         mesh = grains.grain(run).mesh(grains.REFERENCE_NODES)
     else:
