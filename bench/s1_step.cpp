@@ -224,16 +224,23 @@ void BM_S1NarrowPhaseLanes(benchmark::State& state) {
 }
 BENCHMARK(BM_S1NarrowPhaseLanes)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
-void BM_S1Load(benchmark::State& state) {
+// Law2 and the normal law for every pair of the settled step: frictionless, with the spring or the viscous law
+// (the argument).
+void s1Load(benchmark::State& state, NormalLaw normal) {
   SettledStep& step = settled();
-  const ContactModel model = withFriction(scene().model, state.range(0));
+  ContactModel model = withFriction(scene().model, state.range(0));
+  model.options.pressure.normal = normal;
   for (auto _ : state)
     for (size_t k = 0; k < step.data.pairs.size(); ++k)
       benchmark::DoNotOptimize(pairLoad(model, step.data, step.data.pairs[k], step.geoms[k], nullptr,
                                         &step.data.springs[step.data.pairs[k].neighbour]));
   countPerContact(state, step.contacts);
 }
+void BM_S1Load(benchmark::State& state) { s1Load(state, NormalLaw::Pressure); }
 BENCHMARK(BM_S1Load)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+// The energy law (rm.engine(normal='energy')), frictionless.
+void BM_S1EnergyLoad(benchmark::State& state) { s1Load(state, NormalLaw::Energy); }
+BENCHMARK(BM_S1EnergyLoad)->Arg(0)->Unit(benchmark::kMillisecond);
 
 // Ig2 and then Law2 for each pair in turn, as the step runs them (ContactStep.cpp): the law reads a pair's contact
 // records while the narrow phase's writes are still in cache, where BM_S1Load reads every pair's from memory.

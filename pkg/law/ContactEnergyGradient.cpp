@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "pkg/math/DiskPolygonIntegrals.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -16,40 +15,48 @@ struct EdgeGradients {
   Vector2r outline = Vector2r::Zero();
 };
 
-// Adds the edge P Q of S (outward normal m) to the corners of `triangle` if it lies on one of its edges.
+// Adds the edge P Q of S (outward normal m, its integrals `edge`) to the corners of `triangle` if it lies on one of
+// its edges A B: lambda along P Q is l = lP + lambda (lQ - lP) along A B, so the integral of l w^3 ds, B's share, is
+// lP energy + (lQ - lP) energyMoment, and A's share the rest.
 bool onTriangleEdge(const std::array<Vector2r, 3>& triangle, const Vector2r& P, const Vector2r& Q, const Vector2r& m,
-                    Real a, Real k, Real tolerance, std::array<Vector2r, 3>& g) {
+                    const EdgeIntegrals& edge, Real k, Real tolerance, std::array<Vector2r, 3>& g) {
   for (int e = 0; e < 3; ++e) {
     const Vector2r &A = triangle[e], &B = triangle[(e + 1) % 3];
     const Vector2r d = B - A;
-    const Real length = d.norm();
-    auto offLine = [&](const Vector2r& x) { return std::abs(d.x() * (x - A).y() - d.y() * (x - A).x()) / length; };
-    if (!(length > 0) || offLine(P) > tolerance || offLine(Q) > tolerance) continue;
-    const Real lP = (P - A).dot(d) / (length * length), lQ = (Q - A).dot(d) / (length * length);
-    const SegmentIntegrals edge = segmentIntegrals(a, A, B, std::min(lP, lQ), std::max(lP, lQ));
-    g[e] += k * (edge.energy - edge.energyMoment) * m;
-    g[(e + 1) % 3] += k * edge.energyMoment * m;
+    const Real lengthSq = d.squaredNorm();
+    // Off the line by at most the tolerance: |d x (x - A)| <= tolerance |d|, squared.
+    const Real reach = tolerance * tolerance * lengthSq;
+    auto onLine = [&](const Vector2r& x) {
+      const Real off = cross2(d, x - A);
+      return off * off <= reach;
+    };
+    if (!(lengthSq > 0) || !onLine(P) || !onLine(Q)) continue;
+    const Real lP = (P - A).dot(d) / lengthSq, lQ = (Q - A).dot(d) / lengthSq;
+    const Real toB = lP * edge.energy + (lQ - lP) * edge.energyMoment;
+    g[e] += k * (edge.energy - toB) * m;
+    g[(e + 1) % 3] += k * toB * m;
     return true;
   }
   return false;
 }
 
-EdgeGradients edgeGradients(const PressureGeom& geom, bool partnerTriangle, Real k) {
+EdgeGradients edgeGradients(const PressureGeom& geom, bool partnerTriangle, Real k, const DiskPolygonBatch& edges,
+                            int polygon) {
   const ConvexPolygon& S = geom.polygon;
-  const Real a = geom.contactRadius;
   // S's corners on a triangle's edge line come from clipping: off it by round-off of the corners' size.
-  Real size = a;
+  Real size = geom.contactRadius;
   for (const Vector2r& u : geom.nodes) size = std::max(size, u.cwiseAbs().maxCoeff());
   const Real tolerance = 1e-9 * size;
   EdgeGradients g;
   for (int i = 0; i < S.size(); ++i) {
     const Vector2r &P = S[i], &Q = S[(i + 1) % S.size()];
+    const EdgeIntegrals edge = edges.edge(polygon, i);
+    if (edge.energy == 0) continue;  // outside the disc (or a point): no energy to move
     const Vector2r d = Q - P;
-    if (!(d.squaredNorm() > 0)) continue;
     const Vector2r m = Vector2r(d.y(), -d.x()).normalized();  // outward: S is counter-clockwise
-    if (onTriangleEdge(geom.nodes, P, Q, m, a, k, tolerance, g.own)) continue;
-    if (partnerTriangle && onTriangleEdge(geom.partnerNodes, P, Q, m, a, k, tolerance, g.partner)) continue;
-    g.outline += k * segmentIntegrals(a, P, Q).energy * m;
+    if (onTriangleEdge(geom.nodes, P, Q, m, edge, k, tolerance, g.own)) continue;
+    if (partnerTriangle && onTriangleEdge(geom.partnerNodes, P, Q, m, edge, k, tolerance, g.partner)) continue;
+    g.outline += k * edge.energy * m;
   }
   return g;
 }
@@ -58,11 +65,11 @@ EdgeGradients edgeGradients(const PressureGeom& geom, bool partnerTriangle, Real
 
 EnergyForces contactEnergyGradient(const PressureGeom& geom, Real elasticForce, Real energyAmplitude,
                                    const std::array<Vector3r, 3>& corners1, const Vector3r& sphere1,
-                                   const EnergyPartner& partner) {
+                                   const EnergyPartner& partner, const DiskPolygonBatch& edges, int polygon) {
   const Vector3r& n = geom.normal;
   auto inSpace = [&](const Vector2r& u) -> Vector3r { return u.x() * geom.tangent1 + u.y() * geom.tangent2; };
   const bool triangle = partner.kind == EnergyPartner::Triangle;
-  const EdgeGradients g = edgeGradients(geom, triangle, energyAmplitude);
+  const EdgeGradients g = edgeGradients(geom, triangle, energyAmplitude, edges, polygon);
   EnergyForces out;
   if (partner.kind == EnergyPartner::Plane) {
     // The outline's corners are the partner's: moving s1 in the plane moves c, and so every projected corner, its

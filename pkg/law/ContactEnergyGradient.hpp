@@ -19,6 +19,7 @@
 #include <array>
 
 #include "pkg/geom/PressureGeom.hpp"
+#include "pkg/math/DiskPolygonBatch.hpp"
 
 namespace roundedmesh {
 
@@ -40,9 +41,10 @@ struct EnergyForces {
 };
 
 // corners1: body 1's triangle corners in the order of geom.nodes, sphere1: its sphere's centre s1 [m], body 1's frame.
-// elasticForce [N], energyAmplitude k [Pa/m^2].
+// elasticForce [N], energyAmplitude k [Pa/m^2]; S's edges' integrals along their parts inside Omega: those of polygon
+// `polygon` of `edges` (DiskPolygonBatch.hpp, where the elastic force was integrated).
 EnergyForces contactEnergyGradient(const PressureGeom& geom, Real elasticForce, Real energyAmplitude,
                                    const std::array<Vector3r, 3>& corners1, const Vector3r& sphere1,
-                                   const EnergyPartner& partner);
+                                   const EnergyPartner& partner, const DiskPolygonBatch& edges, int polygon);
 
 }  // namespace roundedmesh

@@ -14,7 +14,7 @@ void energyNormalLaw(const TriangleLoad& contact, Wrench& onBody) {
   addNodeForcesToBody(contact.corners, nodeForces(geom.nodes, damping), geom.normal, onBody);
   const EnergyForces elastic =
       contactEnergyGradient(geom, load.elasticForce, hertzEnergyAmplitude(contact.phys, geom.radius), contact.corners,
-                            contact.sphereCentre, contact.partner);
+                            contact.sphereCentre, contact.partner, *contact.exact, contact.exactIndex);
   for (int k = 0; k < elastic.count; ++k) {
     onBody.force -= elastic.onBody2[k].force;
     onBody.torque -= elastic.onBody2[k].point.cross(elastic.onBody2[k].force);

@@ -52,43 +52,45 @@ NormalLoad applyDirectly(const ConvexPolygon& polygon, Real a, const Vector2r& e
   return {force, force * leverTimesNormal(effectivePoint), Regime::Direct};
 }
 
-// The closed forms, and the energy with e / (a^2 - r^2)^(3/2) = 4 E* / (3 pi R*^2) [Pa/m^2] (hertzEnergyAmplitude).
-NormalLoad integrateExactly(const ConvexPolygon& polygon, Real a, const HertzPressure& pressure, const HertzPhys& phys,
-                            Real radius) {
-  const DiskPolygonIntegrals integrals = diskPolygonIntegrals(a, polygon);
-  const Vector2r moment = leverTimesNormal(integrals.pressureMoment);
-  NormalLoad load{pressure.amplitude * integrals.pressure, pressure.amplitude * moment, Regime::Exact};
-  load.elasticEnergy = hertzEnergyAmplitude(phys, radius) * integrals.energy;
-  return load;
-}
-
-// `radius`: R* [m], for the exact regime's energy.
+// The paper's regimes, chosen by Eq. 14.
 NormalLoad integrate(const ConvexPolygon& polygon, const Vector2r& effectivePoint, const HertzPressure& pressure,
-                     const PressureOptions& options, const HertzPhys& phys, Real radius) {
+                     const PressureOptions& options) {
   const Real a = std::sqrt(pressure.contactRadiusSq);
-  if (options.regime == RegimeChoice::Exact || options.normal == NormalLaw::Energy)
-    return integrateExactly(polygon, a, pressure, phys, radius);
   return useDirectRegime(polygon, a, options) ? applyDirectly(polygon, a, effectivePoint, pressure)
                                               : integrateByQuadrature(polygon, a, pressure);
 }
 
+// An elliptical contact's moment, integrated over T(S), in the plane: on T(S) the moment is (leverTimesNormal of) the
+// first moment in y; in the plane x = x* + T^-1 y.
+NormalLoad momentInPlane(NormalLoad load, const PressureGeom& geom) {
+  if (!geom.elliptical) return load;
+  const Vector2r firstMoment(-load.moment.y(), load.moment.x());
+  load.moment = leverTimesNormal(load.force * geom.ellipseCentre + geom.toCircle.inverse() * firstMoment);
+  return load;
+}
+
 }  // namespace
 
+// The closed forms, and the energy with e / (a^2 - r^2)^(3/2) = 4 E* / (3 pi R*^2) [Pa/m^2] (hertzEnergyAmplitude).
+NormalLoad exactLoad(const DiskPolygonIntegrals& integrals, const PressureGeom& geom, const HertzPhys& phys) {
+  const Real amplitude = hertzElasticAmplitude(phys, geom.radius);
+  NormalLoad load{amplitude * integrals.pressure, amplitude * leverTimesNormal(integrals.pressureMoment),
+                  Regime::Exact};
+  load.elasticEnergy = hertzEnergyAmplitude(phys, geom.radius) * integrals.energy;
+  return momentInPlane(load, geom);
+}
+
 NormalLoad elasticLoad(const PressureGeom& geom, const HertzPhys& phys, const PressureOptions& options) {
+  if (integratesExactly(options))
+    return exactLoad(diskPolygonIntegrals(geom.contactRadius, exactPolygon(geom)), geom, phys);
   const HertzPressure pressure{hertzElasticAmplitude(phys, geom.radius), geom.contactRadius * geom.contactRadius};
   NormalLoad load =
       geom.elliptical
-          ? integrate(circlePolygon(geom), geom.toCircle * (geom.effectivePoint - geom.ellipseCentre), pressure,
-                      options, phys, geom.radius)
-          : integrate(geom.polygon, geom.effectivePoint, pressure, options, phys, geom.radius);
+          ? integrate(circlePolygon(geom), geom.toCircle * (geom.effectivePoint - geom.ellipseCentre), pressure, options)
+          : integrate(geom.polygon, geom.effectivePoint, pressure, options);
   // A Hertz contact's potential, (2/5) F delta, where the pressure is integrated by the paper's rules.
-  if (load.regime != Regime::Exact) load.elasticEnergy = 0.4 * load.force * geom.sphereOverlap;
-  if (geom.elliptical) {
-    // On T(S) the moment is (leverTimesNormal of) the first moment in y; in the plane x = x* + T^-1 y.
-    const Vector2r firstMoment(-load.moment.y(), load.moment.x());
-    load.moment = leverTimesNormal(load.force * geom.ellipseCentre + geom.toCircle.inverse() * firstMoment);
-  }
-  return load;
+  load.elasticEnergy = 0.4 * load.force * geom.sphereOverlap;
+  return momentInPlane(load, geom);
 }
 
 NormalLoad dampedLoad(NormalLoad load, const PressureGeom& geom, const HertzPhys& phys) {

@@ -16,6 +16,7 @@
 #pragma once
 
 #include "pkg/geom/PressureGeom.hpp"
+#include "pkg/math/DiskPolygonIntegrals.hpp"
 #include "pkg/phys/HertzPhys.hpp"
 
 namespace roundedmesh {
@@ -61,5 +62,17 @@ NormalLoad Law2_PressureGeom_HertzPhys_IntegratedPressure(const PressureGeom& ge
 NormalLoad elasticLoad(const PressureGeom& geom, const HertzPhys& phys, const PressureOptions& options);
 // that load kept as its elastic part and scaled by Eq. 7's damping at its centre of pressure (at c unless Fn > 0).
 NormalLoad dampedLoad(NormalLoad elastic, const PressureGeom& geom, const HertzPhys& phys);
+
+// The exact regime's parts, for the engine, which integrates a pair's contacts together in lanes (DiskPolygonBatch.hpp):
+// whether the options integrate in closed form (regime='exact', or the energy law);
+inline bool integratesExactly(const PressureOptions& options) {
+  return options.regime == RegimeChoice::Exact || options.normal == NormalLaw::Energy;
+}
+// the polygon the closed forms integrate over, with the disc of radius geom.contactRadius: S, or T(S) for an ellipse;
+inline ConvexPolygon exactPolygon(const PressureGeom& geom) {
+  return geom.elliptical ? circlePolygon(geom) : geom.polygon;
+}
+// and the elastic load from its integrals.
+NormalLoad exactLoad(const DiskPolygonIntegrals& integrals, const PressureGeom& geom, const HertzPhys& phys);
 
 }  // namespace roundedmesh

@@ -14,6 +14,7 @@
 
 #include "pkg/law/ContactEnergyGradient.hpp"
 #include "pkg/law/NodeForces.hpp"
+#include "pkg/math/DiskPolygonBatch.hpp"
 #include "pkg/phys/HertzPhys.hpp"
 
 namespace roundedmesh {
@@ -27,6 +28,10 @@ struct TriangleLoad {
   const Vector3r& sphereCentre;            // of body 1's triangle [m]
   const EnergyPartner& partner;            // body 2's side, filled only for a law that needsPartner
   const HertzPhys& phys;
+  // Where the load was integrated in closed form (integratesExactly): polygon `exactIndex` of `exact` is S, and its
+  // edge integrals are S's edges' (for the energy law, which always integrates so).
+  const DiskPolygonBatch* exact = nullptr;
+  int exactIndex = 0;
 };
 
 // Adds the contact's force on body 1 to its wrench (torque about body 1's origin).

@@ -30,14 +30,14 @@ struct DiskPolygonIntegrals {
 
 DiskPolygonIntegrals diskPolygonIntegrals(Real radius, const ConvexPolygon& polygon);
 
-// Along the segment x(l) = A + l (B - A), l in [l0, l1], its part inside the disc: the integrals of w^3 ds and of
-// l w^3 ds (ds the arc length) [m^4]: what a straight edge of S moving outward adds to the energy integral, and how
-// that splits between its two ends (the edge-force terms of the energy's gradient, ContactEnergyGradient.hpp).
-struct SegmentIntegrals {
+// Along the edge from P to Q, its part inside the disc: the integrals of w^3 ds and of lambda w^3 ds (ds the arc
+// length, lambda = 0 at P and 1 at Q) [m^4]: what a straight edge of S moving outward adds to the energy integral,
+// and how that splits between its two ends (the edge-force terms of the energy's gradient, ContactEnergyGradient.hpp).
+struct EdgeIntegrals {
   Real energy = 0;
   Real energyMoment = 0;
 };
 
-SegmentIntegrals segmentIntegrals(Real radius, const Vector2r& A, const Vector2r& B, Real l0 = 0, Real l1 = 1);
+EdgeIntegrals edgeIntegrals(Real radius, const Vector2r& P, const Vector2r& Q);
 
 }  // namespace roundedmesh

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -124,6 +125,15 @@ TEST(DiskPolygonIntegrals, MatchNumericalIntegration) {
   expectMatches(ConvexPolygon::triangle({0, 0}, {1.5, 0.2}, {0.3, 1.1}), a, "corner at the centre");
   expectMatches(ConvexPolygon::triangle({-1.5, 0}, {1.5, 0}, {0.2, 0.8}), a, "edge through the centre");
   expectMatches(ConvexPolygon::triangle({-1.2, 0.7}, {1.2, 0.7}, {0.0, 0.71}), a, "sliver on a chord");
+  // A corner at the centre, turned: the edges from it have h = 0 up to round-off of either sign, where the whole
+  // angle and the cone's atan2 term must take the same sign to cancel.
+  for (int k = 0; k < 12; ++k) {
+    const Real turn = 0.37 + k * M_PI / 6;
+    auto turned = [&](Real x, Real y) {
+      return Vector2r(x * std::cos(turn) - y * std::sin(turn), x * std::sin(turn) + y * std::cos(turn));
+    };
+    expectMatches(ConvexPolygon::triangle({0, 0}, turned(1.5, 0.2), turned(0.3, 0.7)), a, "corner at the centre, turned");
+  }
   std::mt19937 random(7);
   std::uniform_real_distribution<Real> corner(-1.6, 1.6);
   for (int n = 0; n < 24; ++n) {
@@ -134,24 +144,27 @@ TEST(DiskPolygonIntegrals, MatchNumericalIntegration) {
   }
 }
 
-// Along a segment, clipped to [l0, l1] and to the disc: the integrals of w^3 ds and l w^3 ds against tanh-sinh
-// quadrature over the clipped part (1e-12 of a^4: both exact to round-off there).
-TEST(DiskPolygonIntegrals, SegmentIntegralsMatchNumericalIntegration) {
+// Along an edge P Q, its part inside the disc: the integrals of w^3 ds and lambda w^3 ds (lambda from 0 at P to 1 at
+// Q) against tanh-sinh quadrature over that part (1e-12 of a^4: both exact to round-off there). The edges run
+// inside, across the circle once or twice, outside, and through the centre.
+TEST(DiskPolygonIntegrals, EdgeIntegralsMatchNumericalIntegration) {
   const Real a = 1.3;
   std::mt19937 random(3);
-  std::uniform_real_distribution<Real> corner(-2, 2), fraction(0, 1);
-  for (int n = 0; n < 40; ++n) {
-    const Vector2r A(corner(random), corner(random)), B(corner(random), corner(random));
-    Real l0 = n % 3 ? fraction(random) * 0.5 : 0, l1 = n % 4 ? 0.5 + fraction(random) * 0.5 : 1;
-    const SegmentIntegrals exact = segmentIntegrals(a, A, B, l0, l1);
-    // The clipped part: where |A + l (B - A)| < a.
-    const Vector2r d = B - A;
-    const Real qa = d.squaredNorm(), qb = A.dot(d), qc = A.squaredNorm() - a * a, D = qb * qb - qa * qc;
+  std::uniform_real_distribution<Real> corner(-2, 2);
+  std::vector<std::pair<Vector2r, Vector2r>> edges = {{{-2, 0}, {2, 0}}, {{0.1, 0.2}, {-0.3, 0.5}},
+                                                      {{-2, 1.3}, {2, 1.3}}, {{0.2, -0.1}, {1.9, 1.2}}};
+  for (int n = 0; n < 40; ++n) edges.push_back({{corner(random), corner(random)}, {corner(random), corner(random)}});
+  for (size_t n = 0; n < edges.size(); ++n) {
+    const auto& [P, Q] = edges[n];
+    const EdgeIntegrals exact = edgeIntegrals(a, P, Q);
+    // The part inside: where |P + lambda (Q - P)| < a, lambda in [0, 1].
+    const Vector2r d = Q - P;
+    const Real qa = d.squaredNorm(), qb = P.dot(d), qc = P.squaredNorm() - a * a, D = qb * qb - qa * qc;
     Four sum = Four::Zero();
     if (D > 0) {
-      const Real lo = std::max(l0, (-qb - std::sqrt(D)) / qa), hi = std::min(l1, (-qb + std::sqrt(D)) / qa);
+      const Real lo = std::max(Real(0), (-qb - std::sqrt(D)) / qa), hi = std::min(Real(1), (-qb + std::sqrt(D)) / qa);
       sum = tanhSinh([&](Real l) {
-        const Real w = std::sqrt(std::max(a * a - (A + l * d).squaredNorm(), Real(0)));
+        const Real w = std::sqrt(std::max(a * a - (P + l * d).squaredNorm(), Real(0)));
         return Four(w * w * w, l * w * w * w, 0, 0);
       }, lo, hi) * d.norm();
     }
