@@ -89,13 +89,19 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   const size_t listedFrom = contacts ? contacts->size() : 0;
   const bool needsPartner = law.normal->needsPartner;
   const PartnerFrame frame = needsPartner ? partnerFrame(model, pair, s1, s2, R_WB.transpose()) : PartnerFrame();
-  // Where the loads are integrated in closed form: the batch's polygons, whose edges the energy law's gradient reads.
+  // Law2 in two stages, 16 contacts at a time: each contact's elastic load (in closed form, the polygons' edges in
+  // lanes, where the options ask for it), then their damping and node forces (Eq. 15) in lanes.
   thread_local DiskPolygonBatch exact;
+  thread_local DampedLoads batch;
+  static_assert(DiskPolygonBatch::kPolygons == DampedLoads::kCapacity);
   const bool exactly = law.integratesExactly();
-  // One contact's force on the bodies and its share of the pair's sums, added in the contacts' order (exactIndex: its
-  // polygon in `exact`).
-  auto addContact = [&](const PressureGeom& geom, const NormalLoad& load, const std::array<Real, 3>& forces,
-                        int exactIndex) {
+  batch.damping = phys.damping;
+  batch.withDamping = law.normal->needsDamping;
+  // One contact's force on the bodies and its share of the pair's sums, added in the contacts' order, from its lane of
+  // the batches.
+  auto addContact = [&](const PressureGeom& geom, int lane) {
+    const NormalLoad load = batch.load(lane);
+    const std::array<Real, 3> forces = batch.nodeForces(lane);
     ++(load.regime == Regime::Direct  ? result.statistics.directContacts
        : load.regime == Regime::Exact ? result.statistics.exactContacts
                                       : result.statistics.quadratureContacts);
@@ -103,8 +109,8 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     const std::array<Vector3r, 3> x_B = {mesh.vertices()[corners[0]], mesh.vertices()[corners[1]],
                                          mesh.vertices()[corners[2]]};
     const EnergyPartner partner = needsPartner ? frame.partner(geom) : EnergyPartner{};
-    law.normal->apply({geom, load, x_B, forces, mesh.rounded(geom.triangle).sphereCentre, partner, phys,
-                       exactly ? &exact : nullptr, exactIndex},
+    law.normal->apply({geom, load, x_B, forces, batch.dampingNodeForces(lane), mesh.rounded(geom.triangle).sphereCentre,
+                       partner, phys, exactly ? &exact : nullptr, lane},
                       onBody_B);
     const Vector3r point_B = planePoint(geom, geom.effectivePoint);
     // Fn acts at c + (-Mn_y, Mn_x) / Fn (NodeForces.hpp), so Fn times that point needs no division.
@@ -128,11 +134,6 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
       if (geom.partnerTriangle >= 0) c.partnerNodeForces = nodeForces(geom.partnerNodes, load);
     }
   };
-  // Law2 in two stages, 16 contacts at a time: each contact's elastic load (in closed form, the batch's edges in
-  // lanes), then their damping and node forces (Eq. 15) in lanes.
-  thread_local DampedLoads batch;
-  static_assert(DiskPolygonBatch::kPolygons == DampedLoads::kCapacity);
-  batch.damping = phys.damping;
   const int count = static_cast<int>(geoms.size());
   for (int first = 0; first < count; first += DampedLoads::kCapacity) {
     batch.size = std::min(DampedLoads::kCapacity, count - first);
@@ -146,7 +147,7 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
       for (int k = 0; k < batch.size; ++k) batch.set(k, law.elasticLoad(geoms[first + k]), geoms[first + k]);
     }
     dampLoads(batch);
-    for (int k = 0; k < batch.size; ++k) addContact(geoms[first + k], batch.load(k), batch.nodeForces(k), k);
+    for (int k = 0; k < batch.size; ++k) addContact(geoms[first + k], k);
   }
   summary.triangleContacts = static_cast<int>(geoms.size());
   const bool loaded = normalForce > 0;

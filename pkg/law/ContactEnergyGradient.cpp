@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-
 namespace roundedmesh {
 namespace {
 
@@ -15,23 +14,35 @@ struct EdgeGradients {
   Vector2r outline = Vector2r::Zero();
 };
 
-// Adds the edge P Q of S (outward normal m, its integrals `edge`) to the corners of `triangle` if it lies on one of
+// A triangle's edge lines A B, to find the one an edge of S lies on: off the line by at most the tolerance is
+// |d x (x - A)| <= tolerance |d|, d = B - A, squared.
+struct EdgeLines {
+  std::array<Vector2r, 3> from, along;
+  std::array<Real, 3> lengthSq, reach;
+
+  EdgeLines(const std::array<Vector2r, 3>& triangle, Real tolerance) {
+    for (int e = 0; e < 3; ++e) {
+      from[e] = triangle[e];
+      along[e] = triangle[(e + 1) % 3] - triangle[e];
+      lengthSq[e] = along[e].squaredNorm();
+      reach[e] = tolerance * tolerance * lengthSq[e];
+    }
+  }
+  bool onLine(int e, const Vector2r& x) const {
+    const Real off = cross2(along[e], x - from[e]);
+    return off * off <= reach[e];
+  }
+};
+
+// Adds the edge P Q of S (outward normal m, its integrals `edge`) to the corners of the triangle if it lies on one of
 // its edges A B: lambda along P Q is l = lP + lambda (lQ - lP) along A B, so the integral of l w^3 ds, B's share, is
 // lP energy + (lQ - lP) energyMoment, and A's share the rest.
-bool onTriangleEdge(const std::array<Vector2r, 3>& triangle, const Vector2r& P, const Vector2r& Q, const Vector2r& m,
-                    const EdgeIntegrals& edge, Real k, Real tolerance, std::array<Vector2r, 3>& g) {
+bool onTriangleEdge(const EdgeLines& lines, const Vector2r& P, const Vector2r& Q, const Vector2r& m,
+                    const EdgeIntegrals& edge, Real k, std::array<Vector2r, 3>& g) {
   for (int e = 0; e < 3; ++e) {
-    const Vector2r &A = triangle[e], &B = triangle[(e + 1) % 3];
-    const Vector2r d = B - A;
-    const Real lengthSq = d.squaredNorm();
-    // Off the line by at most the tolerance: |d x (x - A)| <= tolerance |d|, squared.
-    const Real reach = tolerance * tolerance * lengthSq;
-    auto onLine = [&](const Vector2r& x) {
-      const Real off = cross2(d, x - A);
-      return off * off <= reach;
-    };
-    if (!(lengthSq > 0) || !onLine(P) || !onLine(Q)) continue;
-    const Real lP = (P - A).dot(d) / lengthSq, lQ = (Q - A).dot(d) / lengthSq;
+    if (!(lines.lengthSq[e] > 0) || !lines.onLine(e, P) || !lines.onLine(e, Q)) continue;
+    const Vector2r &A = lines.from[e], &d = lines.along[e];
+    const Real lP = (P - A).dot(d) / lines.lengthSq[e], lQ = (Q - A).dot(d) / lines.lengthSq[e];
     const Real toB = lP * edge.energy + (lQ - lP) * edge.energyMoment;
     g[e] += k * (edge.energy - toB) * m;
     g[(e + 1) % 3] += k * toB * m;
@@ -47,15 +58,17 @@ EdgeGradients edgeGradients(const PressureGeom& geom, bool partnerTriangle, Real
   Real size = geom.contactRadius;
   for (const Vector2r& u : geom.nodes) size = std::max(size, u.cwiseAbs().maxCoeff());
   const Real tolerance = 1e-9 * size;
+  const EdgeLines own(geom.nodes, tolerance);
+  const EdgeLines partner(partnerTriangle ? geom.partnerNodes : geom.nodes, tolerance);
   EdgeGradients g;
   for (int i = 0; i < S.size(); ++i) {
-    const Vector2r &P = S[i], &Q = S[(i + 1) % S.size()];
     const EdgeIntegrals edge = edges.edge(polygon, i);
     if (edge.energy == 0) continue;  // outside the disc (or a point): no energy to move
-    const Vector2r d = Q - P;
-    const Vector2r m = Vector2r(d.y(), -d.x()).normalized();  // outward: S is counter-clockwise
-    if (onTriangleEdge(geom.nodes, P, Q, m, edge, k, tolerance, g.own)) continue;
-    if (partnerTriangle && onTriangleEdge(geom.partnerNodes, P, Q, m, edge, k, tolerance, g.partner)) continue;
+    const Vector2r &P = S[i], &Q = S[(i + 1) % S.size()];
+    const Vector2r unit = edges.direction(polygon, i);
+    const Vector2r m(unit.y(), -unit.x());  // outward: S is counter-clockwise
+    if (onTriangleEdge(own, P, Q, m, edge, k, g.own)) continue;
+    if (partnerTriangle && onTriangleEdge(partner, P, Q, m, edge, k, g.partner)) continue;
     g.outline += k * edge.energy * m;
   }
   return g;

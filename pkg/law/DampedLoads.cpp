@@ -13,14 +13,44 @@ namespace roundedmesh {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+using D = hn::CappedTag<double, DampedLoads::kCapacity>;
+using V = hn::Vec<D>;
+
+HWY_INLINE V atLeastZero(V x) { return hn::IfThenElse(hn::Lt(x, hn::Zero(D())), hn::Zero(D()), x); }
+
+// nodeForces of the load (force, moment) on the triangle (x, y), step by step, into out[i][lane...]: none for a zero
+// or non-finite load, a third each on an edge-on triangle. Inlined: called, it was the lanes' function's tail call,
+// which then returned without clearing the vector registers' upper halves (vzeroupper), and the scalar code after it
+// ran slower by half.
+HWY_INLINE void storeNodeForces(V force, V momentX, V momentY, const V (&x)[3], const V (&y)[3],
+                                Real (*out)[DampedLoads::kCapacity], size_t lane) {
+  const D d;
+  const V zero = hn::Zero(d);
+  const auto unloaded = hn::Or(hn::Eq(force, zero), hn::Not(hn::Lt(hn::Abs(force), hn::Inf(d))));
+  const V px = hn::Div(hn::Neg(momentY), force), py = hn::Div(momentX, force);
+  V lambda[3];
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const V ax = hn::Sub(x[j], px), ay = hn::Sub(y[j], py), bx = hn::Sub(x[k], px), by = hn::Sub(y[k], py);
+    lambda[i] = hn::Sub(hn::Mul(ax, by), hn::Mul(ay, bx));
+  }
+  const V twiceArea = hn::Add(hn::Add(lambda[0], lambda[1]), lambda[2]);
+  V sum = zero;
+  for (V& l : lambda) sum = hn::Add(sum, l = atLeastZero(hn::Div(l, twiceArea)));
+  const V third = hn::Div(force, hn::Set(d, 3.0));
+  const auto edgeOn = hn::Eq(twiceArea, zero);
+  for (int i = 0; i < 3; ++i) {
+    const V split = hn::IfThenElse(edgeOn, third, hn::Div(hn::Mul(force, lambda[i]), sum));
+    hn::Store(hn::IfThenElseZero(hn::Not(unloaded), split), d, out[i] + lane);
+  }
+}
+
 // Each lane follows dampedLoad (centreOfPressure, overlapRateAt, dampingFactor) and then nodeForces on the damped
 // load, step by step; std::max(x, 0) is x < 0 ? 0 : x.
 void DampedLoadLanes(DampedLoads& b) {
-  const hn::CappedTag<double, DampedLoads::kCapacity> d;
-  using V = hn::Vec<decltype(d)>;
+  const D d;
   const size_t lanes = hn::Lanes(d);
-  const V zero = hn::Zero(d), one = hn::Set(d, 1.0), three = hn::Set(d, 3.0), damping = hn::Set(d, b.damping);
-  auto atLeastZero = [&](V x) { return hn::IfThenElse(hn::Lt(x, zero), zero, x); };
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.0), damping = hn::Set(d, b.damping);
   for (size_t lane = 0; lane < static_cast<size_t>(b.size); lane += lanes) {
     const V force = hn::Load(d, b.force + lane);
     const V momentX = hn::Load(d, b.momentX + lane), momentY = hn::Load(d, b.momentY + lane);
@@ -38,28 +68,16 @@ void DampedLoadLanes(DampedLoads& b) {
     hn::Store(dampedY, d, b.dampedMomentY + lane);
     hn::Store(rate, d, b.rateAtCentre + lane);
 
-    // Eq. 15 on the damped load: no node forces for a zero or non-finite load, a third each on an edge-on triangle.
-    const auto unloaded = hn::Or(hn::Eq(dampedForce, zero), hn::Not(hn::Lt(hn::Abs(dampedForce), hn::Inf(d))));
-    const V px = hn::Div(hn::Neg(dampedY), dampedForce), py = hn::Div(dampedX, dampedForce);
-    V x[3], y[3], lambda[3];
+    // Eq. 15 on the damped load, and where asked on its damping part (the damped load less the elastic one).
+    V x[3], y[3];
     for (int i = 0; i < 3; ++i) {
       x[i] = hn::Load(d, b.nodeX[i] + lane);
       y[i] = hn::Load(d, b.nodeY[i] + lane);
     }
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3, k = (i + 2) % 3;
-      const V ax = hn::Sub(x[j], px), ay = hn::Sub(y[j], py), bx = hn::Sub(x[k], px), by = hn::Sub(y[k], py);
-      lambda[i] = hn::Sub(hn::Mul(ax, by), hn::Mul(ay, bx));
-    }
-    const V twiceArea = hn::Add(hn::Add(lambda[0], lambda[1]), lambda[2]);
-    V sum = zero;
-    for (V& l : lambda) sum = hn::Add(sum, l = atLeastZero(hn::Div(l, twiceArea)));
-    const V third = hn::Div(dampedForce, three);
-    const auto edgeOn = hn::Eq(twiceArea, zero);
-    for (int i = 0; i < 3; ++i) {
-      const V split = hn::IfThenElse(edgeOn, third, hn::Div(hn::Mul(dampedForce, lambda[i]), sum));
-      hn::Store(hn::IfThenElseZero(hn::Not(unloaded), split), d, b.nodeForce[i] + lane);
-    }
+    storeNodeForces(dampedForce, dampedX, dampedY, x, y, b.nodeForce, lane);
+    if (b.withDamping)
+      storeNodeForces(hn::Sub(dampedForce, force), hn::Sub(dampedX, momentX), hn::Sub(dampedY, momentY), x, y,
+                      b.dampingNodeForce, lane);
   }
 }
 

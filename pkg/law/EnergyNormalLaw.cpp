@@ -10,8 +10,7 @@ namespace roundedmesh {
 void energyNormalLaw(const TriangleLoad& contact, Wrench& onBody) {
   const PressureGeom& geom = contact.geom;
   const NormalLoad& load = contact.load;
-  const NormalLoad damping{load.force - load.elasticForce, load.moment - load.elasticMoment, load.regime};
-  addNodeForcesToBody(contact.corners, nodeForces(geom.nodes, damping), geom.normal, onBody);
+  addNodeForcesToBody(contact.corners, contact.dampingNodeForces, geom.normal, onBody);
   const EnergyForces elastic =
       contactEnergyGradient(geom, load.elasticForce, hertzEnergyAmplitude(contact.phys, geom.radius), contact.corners,
                             contact.sphereCentre, contact.partner, *contact.exact, contact.exactIndex);

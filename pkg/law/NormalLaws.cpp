@@ -4,8 +4,8 @@ namespace roundedmesh {
 
 const std::vector<NormalLawEntry>& normalLaws() {
   static const std::vector<NormalLawEntry> registry = {
-      {"pressure", NormalLaw::Pressure, &pressureNormalLaw, false},
-      {"energy", NormalLaw::Energy, &energyNormalLaw, true},
+      {"pressure", NormalLaw::Pressure, &pressureNormalLaw, false, false},
+      {"energy", NormalLaw::Energy, &energyNormalLaw, true, true},
   };
   return registry;
 }

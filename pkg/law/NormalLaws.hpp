@@ -25,6 +25,7 @@ struct TriangleLoad {
   const NormalLoad& load;
   const std::array<Vector3r, 3>& corners;  // body 1's triangle [m]
   const std::array<Real, 3>& nodeForces;   // Eq. 15 of the whole load [N]
+  const std::array<Real, 3>& dampingNodeForces;  // Eq. 15 of its damping part, only for a law that needsDamping [N]
   const Vector3r& sphereCentre;            // of body 1's triangle [m]
   const EnergyPartner& partner;            // body 2's side, filled only for a law that needsPartner
   const HertzPhys& phys;
@@ -42,6 +43,7 @@ struct NormalLawEntry {
   NormalLaw law;
   NormalLawFunction apply;
   bool needsPartner;  // whether the law reads TriangleLoad::partner (the engine builds it only then)
+  bool needsDamping;  // whether it reads TriangleLoad::dampingNodeForces (the engine computes them only then)
 };
 
 // Every normal law, in the order of NormalLaw's values.

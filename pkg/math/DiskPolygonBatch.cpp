@@ -18,7 +18,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // atan2(y, x) for y >= 0, in [0, pi]: Highway's arctangent of the ratio in [0, 1], then the octant.
 template <class D, class V>
-V angleOf(D d, V y, V x) {
+HWY_INLINE V angleOf(D d, V y, V x) {
   const V zero = hn::Zero(d), ax = hn::Abs(x);
   const V small = hn::Min(y, ax), large = hn::Max(y, ax);
   const V ratio = hn::IfThenElse(hn::Eq(large, zero), zero, hn::Div(small, large));
@@ -53,6 +53,8 @@ void DiskPolygonLanes(DiskPolygonBatch& b) {
     const V tIn = hn::Max(hn::Div(hn::Sub(hn::Neg(b1), root), lengthSq), zero);
     const V tOut = hn::Min(hn::Div(hn::Add(hn::Neg(b1), root), lengthSq), one);
     const V ux = hn::Div(dx, length), uy = hn::Div(dy, length);
+    hn::Store(ux, d, b.unitX + at);
+    hn::Store(uy, d, b.unitY + at);
     const V h = hn::Sub(hn::Mul(px, uy), hn::Mul(py, ux));
     const V A = hn::Sub(hn::Mul(a, a), hn::Mul(h, h));
     const auto inside = hn::And(hn::And(hn::Gt(length, zero), hn::Gt(discriminant, zero)),

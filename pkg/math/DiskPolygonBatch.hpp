@@ -25,9 +25,11 @@ struct DiskPolygonBatch {
   std::array<int, kPolygons + 1> firstEdge{};    // polygon k's edges are [firstEdge[k], firstEdge[k + 1])
   // Inputs per edge: its ends [m] and its disc's radius a [m].
   alignas(64) Real px[kEdges], py[kEdges], qx[kEdges], qy[kEdges], radius[kEdges];
-  // Outputs per edge: its triangle's shares of P [m^3], M [m^4] and E [m^5], and its edge integrals [m^4].
+  // Outputs per edge: its triangle's shares of P [m^3], M [m^4] and E [m^5], its edge integrals [m^4], and its
+  // direction (Q - P) / |Q - P| (NaN where P = Q).
   alignas(64) Real pressure[kEdges], momentX[kEdges], momentY[kEdges], energy[kEdges];
   alignas(64) Real edgeEnergy[kEdges], edgeEnergyMoment[kEdges];
+  alignas(64) Real unitX[kEdges], unitY[kEdges];
 
   void clear() { polygons = edges = 0; }
   // Adds S (counter-clockwise, about its disc's centre) and its disc's radius as the next polygon: no edges for an
@@ -36,12 +38,13 @@ struct DiskPolygonBatch {
   // Polygon k's integrals, as diskPolygonIntegrals(a, S) returns them.
   DiskPolygonIntegrals integrals(int k) const;
   // Edge i of polygon k (from corner i to i + 1), as edgeIntegrals(a, S[i], S[i + 1]) returns it (zero where the
-  // polygon added no edges).
+  // polygon added no edges), and where it added them the edge's direction, (S[i + 1] - S[i]).normalized() bit for bit.
   EdgeIntegrals edge(int k, int i) const {
     const int e = firstEdge[k] + i;
     if (e >= firstEdge[k + 1]) return {};
     return {edgeEnergy[e], edgeEnergyMoment[e]};
   }
+  Vector2r direction(int k, int i) const { return {unitX[firstEdge[k] + i], unitY[firstEdge[k] + i]}; }
 };
 
 // Fills the outputs of every edge added; the lanes past the last edge compute on copies of the first.

@@ -6,7 +6,7 @@
 //     pressure (Eq. 7's factor clamped at zero);
 //   - made-up loads at the edges: zero and negative forces, NaN and infinite ones, a triangle edge-on (no area), a
 //     centre of pressure outside the triangle (a weight clamped at zero);
-// and the engine's pair load gives each contact that load and those node forces (pairLoad's listing). No tolerance:
+// the node forces of the damping part alone (the energy law's) likewise, every other batch; and the engine's pair load gives each contact that load and those node forces (pairLoad's listing). No tolerance:
 // the lanes run the reference's operations in its order.
 #include <gtest/gtest.h>
 
@@ -31,7 +31,7 @@ namespace {
 using test::sameBits;
 
 struct Tally {
-  long lanes = 0, clamped = 0, unloaded = 0, edgeOn = 0, weightClamped = 0;
+  long lanes = 0, clamped = 0, unloaded = 0, edgeOn = 0, weightClamped = 0, dampingParts = 0;
 };
 
 // Every field of a NormalLoad bit for bit (the regime equal), naming the first that differs.
@@ -47,14 +47,17 @@ struct Tally {
   return ::testing::AssertionSuccess();
 }
 
-// Each lane of `batch` (filled from `elastic` and `geoms`) against dampedLoad and nodeForces.
+// Each lane of `batch` (filled from `elastic` and `geoms`) against dampedLoad and nodeForces, of the damped load and
+// (every other batch) of its damping part.
 void checkBatch(const std::vector<NormalLoad>& elastic, const std::vector<PressureGeom>& geoms, const HertzPhys& phys,
                 const std::string& where, Tally& tally) {
   DampedLoads batch;
   batch.damping = phys.damping;
+  int batches = 0;
   const int count = static_cast<int>(geoms.size());
   for (int first = 0, size = 1; first < count; first += size, size = size % DampedLoads::kCapacity + 1) {
     batch.size = std::min(size, count - first);
+    batch.withDamping = ++batches % 2 == 0;
     for (int k = 0; k < batch.size; ++k) batch.set(k, elastic[first + k], geoms[first + k]);
     dampLoads(batch);
     for (int k = 0; k < batch.size; ++k) {
@@ -64,6 +67,12 @@ void checkBatch(const std::vector<NormalLoad>& elastic, const std::vector<Pressu
       ASSERT_TRUE(sameLoad(lanes, expected)) << at;
       const std::array<Real, 3> forces = nodeForces(geoms[first + k].nodes, expected);
       ASSERT_TRUE(sameBits(batch.nodeForces(k), forces)) << at;
+      if (batch.withDamping) {
+        const NormalLoad damping{expected.force - expected.elasticForce, expected.moment - expected.elasticMoment,
+                                 expected.regime};
+        ASSERT_TRUE(sameBits(batch.dampingNodeForces(k), nodeForces(geoms[first + k].nodes, damping))) << at;
+        ++tally.dampingParts;
+      }
       ++tally.lanes;
       tally.clamped += expected.elasticForce > 0 && expected.force == 0;
       tally.unloaded += expected.force == 0 || !std::isfinite(expected.force);
@@ -99,6 +108,7 @@ TEST(DampedLoads, EveryLaneOfLibraryContactsIsTheReferenceBitForBit) {
     }
     EXPECT_GT(tally.lanes, 3000);
     EXPECT_GT(tally.clamped, 100);
+    EXPECT_GT(tally.dampingParts, 1000);
     EXPECT_GT(exact, 500);
     EXPECT_GT(elliptical, 300);
     std::cout << hwy::TargetName(target) << ": " << tally.lanes << " contacts, " << exact << " exact, " << elliptical
@@ -138,6 +148,7 @@ TEST(DampedLoads, EveryLaneOfLoadsAtTheEdgesIsTheReferenceBitForBit) {
     }
     checkBatch(elastic, geoms, phys, "made-up loads", tally);
     EXPECT_EQ(tally.lanes, 2000);
+    EXPECT_GT(tally.dampingParts, 600);
     EXPECT_GT(tally.unloaded, 300);
     EXPECT_GT(tally.edgeOn, 80);
     EXPECT_GT(tally.weightClamped, 700);
@@ -146,16 +157,22 @@ TEST(DampedLoads, EveryLaneOfLoadsAtTheEdgesIsTheReferenceBitForBit) {
 
 // The engine's wiring: pairLoad lists each contact with Law2's load and Eq. 15's node forces (its own triangle's and
 // its partner's), on the processor's own instruction set, under both normal laws, for pairs of more contacts than a
-// batch holds too. Under the energy law Law2 integrates in closed form, in lanes (DiskPolygonBatch.hpp, against the
-// scalar closed forms in DiskPolygonBatchTest): each contact's load is its lane's, whichever lane of a batch it had.
+// batch holds too. Under the energy law and in the exact regime (on ellipses too) Law2 integrates in closed form, in
+// lanes (DiskPolygonBatch.hpp, against the scalar closed forms in DiskPolygonBatchTest): each contact's load is its
+// lane's, whichever lane of a batch it had.
 TEST(DampedLoads, PairLoadGivesEachContactLaw2sLoadAndNodeForces) {
   test::RandomSource random(902);
   test::BodyLibrary library(HertzMaterial{1e6, 0.4, 2000, 1e-3, 0.5, 20});
-  long contacts = 0, energyLaw = 0;
+  long contacts = 0, energyLaw = 0, exactEllipses = 0;
   size_t most = 0;
   for (int bodyPair = 0; bodyPair < 150; ++bodyPair) {
     test::BodyPairCase c = test::randomBodyPair(random, library);
-    if (bodyPair % 2) c.model.options.pressure.normal = NormalLaw::Energy;
+    // The paper's law, the energy law, and the paper's law in the exact regime on the principal curvatures' ellipses.
+    if (bodyPair % 3 == 1) c.model.options.pressure.normal = NormalLaw::Energy;
+    if (bodyPair % 3 == 2) {
+      c.model.options.pressure.regime = RegimeChoice::Exact;
+      c.model.options.pressure.curvature = CurvatureModel::Principal;
+    }
     std::vector<PressureGeom> geoms;
     ContactStatistics statistics;
     pairGeometry(c.model, c.data, {0, 1}, geoms, statistics);
@@ -180,12 +197,14 @@ TEST(DampedLoads, PairLoadGivesEachContactLaw2sLoadAndNodeForces) {
         ASSERT_TRUE(sameBits(listed[k].partnerNodeForces, nodeForces(geoms[k].partnerNodes, expected))) << at;
       }
       ++contacts;
-      energyLaw += bodyPair % 2;
+      energyLaw += bodyPair % 3 == 1;
+      exactEllipses += bodyPair % 3 == 2 && geoms[k].elliptical;
     }
     most = std::max(most, geoms.size());
   }
   EXPECT_GT(contacts, 1000);
   EXPECT_GT(energyLaw, 300);
+  EXPECT_GT(exactEllipses, 100);
   EXPECT_GT(most, 2 * static_cast<size_t>(DampedLoads::kCapacity));  // a pair that fills two batches and more
 }
 

@@ -5,7 +5,7 @@
 // most ten edges, so the tolerance is 1e-14 of the whole disc's values (all of these cases agree within 1e-15).
 // Polygons: random triangles and their clips (as DiskPolygonIntegralsTest), the cases where the reference's angles
 // must cancel (a corner at the centre, an edge through it), a chord that barely cuts the circle, the disc inside S,
-// S outside the disc, and full batches of ten-cornered polygons.
+// S outside the disc, and full batches of ten-cornered polygons. The edges' directions are Eigen's, bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -42,6 +42,8 @@ void expectLanesMatch(const std::vector<Case>& cases) {
         const EdgeIntegrals reference = edgeIntegrals(a, s[i], s[(i + 1) % s.size()]);
         EXPECT_NEAR(lane.energy, reference.energy, 1e-14 * std::pow(a, 4)) << what << ", edge " << i;
         EXPECT_NEAR(lane.energyMoment, reference.energyMoment, 1e-14 * std::pow(a, 4)) << what << ", edge " << i;
+        const Vector2r d = s[(i + 1) % s.size()] - s[i];
+        if (a > 0 && d.squaredNorm() > 0) EXPECT_EQ(batch.direction(static_cast<int>(k), i), d.normalized()) << what;
       }
     }
   }
