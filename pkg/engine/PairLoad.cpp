@@ -139,7 +139,7 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     batch.size = std::min(DampedLoads::kCapacity, count - first);
     if (exactly) {
       exact.clear();
-      for (int k = 0; k < batch.size; ++k) exact.add(geoms[first + k].contactRadius, exactPolygon(geoms[first + k]));
+      for (int k = 0; k < batch.size; ++k) exact.add(geoms[first + k].contactRadius, circlePolygon(geoms[first + k]));
       integrateDiskPolygons(exact);
       for (int k = 0; k < batch.size; ++k)
         batch.set(k, law.exactLoad(exact.integrals(k), geoms[first + k]), geoms[first + k]);

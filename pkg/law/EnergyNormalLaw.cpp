@@ -2,6 +2,8 @@
 // energy (ContactEnergyGradient.hpp), so that it does no work round a closed path; the damping, the rest of the
 // pressure, acts as the paper's (node forces, Eq. 15), pushing while the sides approach and pulling while they part,
 // as Eq. 7's term does until the whole pressure reaches zero.
+#include <cassert>
+
 #include "pkg/law/HertzPressure.hpp"
 #include "pkg/law/NormalLaws.hpp"
 
@@ -9,6 +11,8 @@ namespace roundedmesh {
 
 void energyNormalLaw(const TriangleLoad& contact, Wrench& onBody) {
   const PressureGeom& geom = contact.geom;
+  // The engine integrates this law's loads in closed form, over S itself: EngineOptions allows it circles only.
+  assert(contact.exact != nullptr && !geom.elliptical);
   const NormalLoad& load = contact.load;
   addNodeForcesToBody(contact.corners, contact.dampingNodeForces, geom.normal, onBody);
   const EnergyForces elastic =

@@ -82,12 +82,13 @@ NormalLoad exactLoad(const DiskPolygonIntegrals& integrals, const PressureGeom& 
 
 NormalLoad elasticLoad(const PressureGeom& geom, const HertzPhys& phys, const PressureOptions& options) {
   if (integratesExactly(options))
-    return exactLoad(diskPolygonIntegrals(geom.contactRadius, exactPolygon(geom)), geom, phys);
+    return exactLoad(diskPolygonIntegrals(geom.contactRadius, circlePolygon(geom)), geom, phys);
   const HertzPressure pressure{hertzElasticAmplitude(phys, geom.radius), geom.contactRadius * geom.contactRadius};
-  NormalLoad load =
-      geom.elliptical
-          ? integrate(circlePolygon(geom), geom.toCircle * (geom.effectivePoint - geom.ellipseCentre), pressure, options)
-          : integrate(geom.polygon, geom.effectivePoint, pressure, options);
+  NormalLoad load;
+  if (geom.elliptical)
+    load = integrate(circlePolygon(geom), geom.toCircle * (geom.effectivePoint - geom.ellipseCentre), pressure, options);
+  else
+    load = integrate(geom.polygon, geom.effectivePoint, pressure, options);
   // A Hertz contact's potential, (2/5) F delta, where the pressure is integrated by the paper's rules.
   load.elasticEnergy = 0.4 * load.force * geom.sphereOverlap;
   return momentInPlane(load, geom);

@@ -63,16 +63,14 @@ NormalLoad elasticLoad(const PressureGeom& geom, const HertzPhys& phys, const Pr
 // that load kept as its elastic part and scaled by Eq. 7's damping at its centre of pressure (at c unless Fn > 0).
 NormalLoad dampedLoad(NormalLoad elastic, const PressureGeom& geom, const HertzPhys& phys);
 
-// The exact regime's parts, for the engine, which integrates a pair's contacts together in lanes (DiskPolygonBatch.hpp):
+// The exact regime's parts, for the engine, which integrates a pair's contacts together in lanes
+// (DiskPolygonBatch.hpp):
 // whether the options integrate in closed form (regime='exact', or the energy law);
 inline bool integratesExactly(const PressureOptions& options) {
   return options.regime == RegimeChoice::Exact || options.normal == NormalLaw::Energy;
 }
-// the polygon the closed forms integrate over, with the disc of radius geom.contactRadius: S, or T(S) for an ellipse;
-inline ConvexPolygon exactPolygon(const PressureGeom& geom) {
-  return geom.elliptical ? circlePolygon(geom) : geom.polygon;
-}
-// and the elastic load from its integrals.
+// and the elastic load from the integrals over circlePolygon(geom) (S, or T(S) for an ellipse) with the disc of
+// radius geom.contactRadius.
 NormalLoad exactLoad(const DiskPolygonIntegrals& integrals, const PressureGeom& geom, const HertzPhys& phys);
 
 }  // namespace roundedmesh

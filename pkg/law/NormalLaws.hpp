@@ -29,8 +29,8 @@ struct TriangleLoad {
   const Vector3r& sphereCentre;            // of body 1's triangle [m]
   const EnergyPartner& partner;            // body 2's side, filled only for a law that needsPartner
   const HertzPhys& phys;
-  // Where the load was integrated in closed form (integratesExactly): polygon `exactIndex` of `exact` is S, and its
-  // edge integrals are S's edges' (for the energy law, which always integrates so).
+  // Where the load was integrated in closed form (integratesExactly): its polygon is `exactIndex` of `exact`, S itself
+  // for a circular contact (the energy law's, which always integrates so), T(S) for an ellipse.
   const DiskPolygonBatch* exact = nullptr;
   int exactIndex = 0;
 };

@@ -31,7 +31,7 @@ struct PairLaw {
   // Law2's elastic load of one triangle contact, which the engine damps with the pair's others (DampedLoads.hpp).
   NormalLoad elasticLoad(const PressureGeom& geom) const { return roundedmesh::elasticLoad(geom, phys, pressure); }
   // Whether that load is integrated in closed form, and then the same load from the closed forms' integrals over
-  // exactPolygon(geom), which the engine takes in lanes (DiskPolygonBatch.hpp).
+  // circlePolygon(geom), which the engine takes in lanes (DiskPolygonBatch.hpp).
   bool integratesExactly() const { return roundedmesh::integratesExactly(pressure); }
   NormalLoad exactLoad(const DiskPolygonIntegrals& integrals, const PressureGeom& geom) const {
     return roundedmesh::exactLoad(integrals, geom, phys);

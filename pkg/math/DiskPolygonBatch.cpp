@@ -8,6 +8,7 @@
 #include "hwy/contrib/math/math-inl.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "pkg/math/DiskPolygonBatch.hpp"
 
@@ -30,7 +31,7 @@ HWY_INLINE V angleOf(D d, V y, V x) {
 // Each lane follows edgeInDisc and triangleShare (DiskPolygonIntegrals.cpp) and edgeIntegrals, operation by operation;
 // std::max(x, 0) is x < 0 ? 0 : x, and a lane's branches are both computed and one kept.
 void DiskPolygonLanes(DiskPolygonBatch& b) {
-  const hn::ScalableTag<double> d;
+  const hn::CappedTag<double, DiskPolygonBatch::kLanes> d;
   using V = hn::Vec<decltype(d)>;
   const size_t lanes = hn::Lanes(d);
   const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), three = hn::Set(d, 3.0);
@@ -89,7 +90,7 @@ void DiskPolygonLanes(DiskPolygonBatch& b) {
     const V insidePressure = hn::Sub(hn::Mul(hn::Mul(a3, sign), angleSize), hn::Div(cone1, three));
     const V insideEnergy = hn::Sub(hn::Mul(hn::Mul(a5, sign), angleSize),
                                    hn::Div(hn::Sub(hn::Mul(aa, cone1), hn::Mul(h, edgeEnergy)), five));
-    const V outsideAngle = hn::CopySign(angleSize, crossPQ);
+    const V outsideAngle = hn::IfThenElseZero(hn::Gt(length, zero), hn::CopySign(angleSize, crossPQ));
     hn::Store(hn::IfThenElse(inside, insidePressure, hn::Mul(a3, outsideAngle)), d, b.pressure + at);
     hn::Store(hn::IfThenElse(inside, insideEnergy, hn::Mul(a5, outsideAngle)), d, b.energy + at);
     const V third = hn::Div(edgeEnergy, three);
@@ -115,6 +116,7 @@ namespace roundedmesh {
 HWY_EXPORT(DiskPolygonLanes);
 
 void DiskPolygonBatch::add(Real a, const ConvexPolygon& polygon) {
+  if (polygons == kPolygons) throw std::logic_error("DiskPolygonBatch: more than kPolygons polygons");
   firstEdge[polygons] = edges;
   if (!polygon.empty() && a > 0) {
     for (int i = 0; i < polygon.size(); ++i) {
@@ -144,9 +146,10 @@ DiskPolygonIntegrals DiskPolygonBatch::integrals(int k) const {
 
 void integrateDiskPolygons(DiskPolygonBatch& batch) {
   if (batch.edges == 0) return;
-  // The vector loop runs over whole vectors (at most 8 lanes of doubles on x86): the lanes past the last edge compute
-  // on copies of the first.
-  const int padded = std::min(DiskPolygonBatch::kEdges, (batch.edges + 7) / 8 * 8);
+  // The vector loop runs over whole vectors of at most kLanes: the lanes past the last edge compute on copies of the
+  // first.
+  constexpr int lanes = DiskPolygonBatch::kLanes;
+  const int padded = (batch.edges + lanes - 1) / lanes * lanes;
   for (Real* column : {batch.px, batch.py, batch.qx, batch.qy, batch.radius})
     for (int e = batch.edges; e < padded; ++e) column[e] = column[0];
   HWY_DYNAMIC_DISPATCH(DiskPolygonLanes)(batch);

@@ -5,7 +5,8 @@
 //   the edge's own integrals of w^3 ds and lambda w^3 ds along its part inside the disc (edgeIntegrals).
 // As the other batched kernels: Google Highway lanes with the scalar reference's operations in its order and no fused
 // multiply-add, so that each edge's share equals the reference's but for its arctangents: three per edge, Highway's
-// polynomial (3 ulp) where the reference calls the C library's atan2 (DiskPolygonBatchTest: 1e-14 of the disc's
+// polynomial (3 ulp; fused multiply-adds where the instruction set has them, so its last bits depend on it) where
+// the reference calls the C library's atan2 (DiskPolygonBatchTest, every instruction set: 1e-14 of the disc's
 // values). The sums add the shares in S's order, as diskPolygonIntegrals does.
 #pragma once
 
@@ -18,7 +19,9 @@ namespace roundedmesh {
 
 struct DiskPolygonBatch {
   static constexpr int kPolygons = 16;
-  static constexpr int kEdges = kPolygons * ConvexPolygon::kCapacity;  // a multiple of every x86 vector's lanes
+  static constexpr int kEdges = kPolygons * ConvexPolygon::kCapacity;
+  static constexpr int kLanes = 8;  // at most, per vector: every x86 vector unit's doubles
+  static_assert(kEdges % kLanes == 0);
 
   int polygons = 0;                              // polygons added since clear()
   int edges = 0;                                 // their edges
@@ -26,7 +29,7 @@ struct DiskPolygonBatch {
   // Inputs per edge: its ends [m] and its disc's radius a [m].
   alignas(64) Real px[kEdges], py[kEdges], qx[kEdges], qy[kEdges], radius[kEdges];
   // Outputs per edge: its triangle's shares of P [m^3], M [m^4] and E [m^5], its edge integrals [m^4], and its
-  // direction (Q - P) / |Q - P| (NaN where P = Q).
+  // direction (Q - P) / |Q - P| (NaN where P = Q, where Eigen's normalized() gives zero).
   alignas(64) Real pressure[kEdges], momentX[kEdges], momentY[kEdges], energy[kEdges];
   alignas(64) Real edgeEnergy[kEdges], edgeEnergyMoment[kEdges];
   alignas(64) Real unitX[kEdges], unitY[kEdges];
@@ -38,13 +41,18 @@ struct DiskPolygonBatch {
   // Polygon k's integrals, as diskPolygonIntegrals(a, S) returns them.
   DiskPolygonIntegrals integrals(int k) const;
   // Edge i of polygon k (from corner i to i + 1), as edgeIntegrals(a, S[i], S[i + 1]) returns it (zero where the
-  // polygon added no edges), and where it added them the edge's direction, (S[i + 1] - S[i]).normalized() bit for bit.
+  // polygon added no edges), and its direction, (S[i + 1] - S[i]).normalized() bit for bit where S[i + 1] != S[i]
+  // (zero where the polygon added no edges).
   EdgeIntegrals edge(int k, int i) const {
     const int e = firstEdge[k] + i;
     if (e >= firstEdge[k + 1]) return {};
     return {edgeEnergy[e], edgeEnergyMoment[e]};
   }
-  Vector2r direction(int k, int i) const { return {unitX[firstEdge[k] + i], unitY[firstEdge[k] + i]}; }
+  Vector2r direction(int k, int i) const {
+    const int e = firstEdge[k] + i;
+    if (e >= firstEdge[k + 1]) return Vector2r::Zero();
+    return {unitX[e], unitY[e]};
+  }
 };
 
 // Fills the outputs of every edge added; the lanes past the last edge compute on copies of the first.

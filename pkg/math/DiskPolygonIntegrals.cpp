@@ -74,6 +74,7 @@ DiskPolygonIntegrals triangleShare(const Vector2r& p, const Vector2r& q, Real a)
   const Real a3 = a * a * a / 3, a5 = a3 * a * a * 3 / 5;
   const EdgeInDisc e = edgeInDisc(p, q, a);
   DiskPolygonIntegrals share;
+  if (!(e.length > 0)) return share;  // a repeated corner spans nothing (atan2 of two signed zeros may give pi)
   if (!e.inside) {  // a sector of F(a) = a^3/3 (and a^5/5)
     const Real angle = std::atan2(cross2(p, q), p.dot(q));
     share.pressure = a3 * angle;

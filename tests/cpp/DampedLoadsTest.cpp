@@ -6,7 +6,8 @@
 //     pressure (Eq. 7's factor clamped at zero);
 //   - made-up loads at the edges: zero and negative forces, NaN and infinite ones, a triangle edge-on (no area), a
 //     centre of pressure outside the triangle (a weight clamped at zero);
-// the node forces of the damping part alone (the energy law's) likewise, every other batch; and the engine's pair load gives each contact that load and those node forces (pairLoad's listing). No tolerance:
+// the node forces of the damping part alone (the energy law's) likewise, every other batch; and the engine's pair
+// load gives each contact that load and those node forces (pairLoad's listing). No tolerance:
 // the lanes run the reference's operations in its order.
 #include <gtest/gtest.h>
 
@@ -184,7 +185,7 @@ TEST(DampedLoads, PairLoadGivesEachContactLaw2sLoadAndNodeForces) {
     for (size_t k = 0; k < geoms.size(); ++k) {
       // The energy law's loads are integrated in closed form in lanes: a batch of this contact alone gives its lane's.
       DiskPolygonBatch alone;
-      alone.add(geoms[k].contactRadius, exactPolygon(geoms[k]));
+      alone.add(geoms[k].contactRadius, circlePolygon(geoms[k]));
       integrateDiskPolygons(alone);
       const NormalLoad expected =
           law.integratesExactly()

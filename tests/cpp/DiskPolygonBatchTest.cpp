@@ -5,7 +5,8 @@
 // most ten edges, so the tolerance is 1e-14 of the whole disc's values (all of these cases agree within 1e-15).
 // Polygons: random triangles and their clips (as DiskPolygonIntegralsTest), the cases where the reference's angles
 // must cancel (a corner at the centre, an edge through it), a chord that barely cuts the circle, the disc inside S,
-// S outside the disc, and full batches of ten-cornered polygons. The edges' directions are Eigen's, bit for bit.
+// S outside the disc, a repeated corner, and full batches of ten-cornered polygons, on every instruction set. The
+// edges' directions are Eigen's, bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "pkg/math/DiskPolygonBatch.hpp"
+#include "tests/support/HighwayTargets.hpp"
 
 namespace roundedmesh {
 namespace {
@@ -67,6 +69,7 @@ TEST(DiskPolygonBatch, LanesMatchTheScalarClosedForms) {
       {1, ConvexPolygon::triangle({-2, 0.99999}, {2, 0.99999}, {0, 3})},      // a chord that barely cuts the circle
       {1, ConvexPolygon::rectangle({0.1, 0}, 3, 3)},                          // the disc inside S
       {1, ConvexPolygon::rectangle({5, 5}, 1, 1)},                            // S outside the disc
+      {1, ConvexPolygon::triangle({0, -0.0}, {-0.0, 0}, {0.5, 0.5})},        // a repeated corner at the centre
       {2e-3, ConvexPolygon::rectangle({1e-3, 0}, 1e-3, 2.5e-3)},              // contact-sized
       {0, ConvexPolygon::rectangle({0, 0}, 1, 1)},                            // no disc
       {1, ConvexPolygon()},                                                   // no polygon
@@ -91,7 +94,7 @@ TEST(DiskPolygonBatch, LanesMatchTheScalarClosedForms) {
     }
     cases.push_back({1, s});
   }
-  expectLanesMatch(cases);
+  test::forEachInstructionSet([&](int64_t) { expectLanesMatch(cases); });
 }
 
 }  // namespace
