@@ -2,11 +2,11 @@
 // by polygon and edge by edge. The lanes repeat the reference's operations in its order without fused multiply-add;
 // only the arctangents differ (Highway's polynomial to 3 ulp against the C library's): at most about 2e-15 rad in
 // each of three angles per edge, each multiplied by at most a^3 (a^4 along an edge, a^5 for E) and summed over at
-// most ten edges, so the tolerance is 1e-14 of the whole disc's values (all of these cases agree within 1e-15).
-// Polygons: random triangles and their clips (as DiskPolygonIntegralsTest), the cases where the reference's angles
-// must cancel (a corner at the centre, an edge through it), a chord that barely cuts the circle, the disc inside S,
-// S outside the disc, a repeated corner, and full batches of ten-cornered polygons, on every instruction set. The
-// edges' directions are Eigen's, bit for bit.
+// most ten edges, so the tolerance is 1e-14 of the whole disc's values (on AVX-512 these cases agreed within 1e-15
+// when it was written). Polygons: random triangles and their clips (as DiskPolygonIntegralsTest), the cases where
+// the reference's angles must cancel (a corner at the centre, an edge through it), a chord that barely cuts the
+// circle, the disc inside S, S outside the disc, a repeated corner, and full batches of ten-cornered polygons, on
+// every instruction set. The edges' directions are Eigen's, bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
