@@ -45,7 +45,9 @@ void expectLanesMatch(const std::vector<Case>& cases) {
         EXPECT_NEAR(lane.energy, reference.energy, 1e-14 * std::pow(a, 4)) << what << ", edge " << i;
         EXPECT_NEAR(lane.energyMoment, reference.energyMoment, 1e-14 * std::pow(a, 4)) << what << ", edge " << i;
         const Vector2r d = s[(i + 1) % s.size()] - s[i];
-        if (a > 0 && d.squaredNorm() > 0) EXPECT_EQ(batch.direction(static_cast<int>(k), i), d.normalized()) << what;
+        if (a > 0 && d.squaredNorm() > 0) {
+          EXPECT_EQ(batch.direction(static_cast<int>(k), i), d.normalized()) << what;
+        }
       }
     }
   }
