@@ -25,7 +25,9 @@ struct PartnerFrame {
     if (kind == EnergyPartner::Triangle) {
       const Triangle& corners = mesh2->triangles()[geom.partnerTriangle];
       for (int i = 0; i < 3; ++i) p.corners[i] = rotation * mesh2->vertices()[corners[i]] + translation;
-      p.sphereCentre = rotation * mesh2->rounded(geom.partnerTriangle).sphereCentre + translation;
+      const RoundedTriangle& rounded = mesh2->rounded(geom.partnerTriangle);
+      p.sphereCentre = rotation * rounded.sphereCentre + translation;
+      p.normal = rotation * rounded.normal;
     } else if (kind == EnergyPartner::Sphere) {
       p.sphereCentre = translation;
     }
@@ -100,7 +102,7 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
   // One contact's force on the bodies and its share of the pair's sums, added in the contacts' order, from its lane of
   // the batches.
   auto addContact = [&](const PressureGeom& geom, int lane) {
-    const NormalLoad load = batch.load(lane);
+    NormalLoad load = batch.load(lane);
     const std::array<Real, 3> forces = batch.nodeForces(lane);
     ++(load.regime == Regime::Direct  ? result.statistics.directContacts
        : load.regime == Regime::Exact ? result.statistics.exactContacts
@@ -109,9 +111,11 @@ PairResult pairLoad(const ContactModel& model, const ContactData& data, const Bo
     const std::array<Vector3r, 3> x_B = {mesh.vertices()[corners[0]], mesh.vertices()[corners[1]],
                                          mesh.vertices()[corners[2]]};
     const EnergyPartner partner = needsPartner ? frame.partner(geom) : EnergyPartner{};
-    law.normal->apply({geom, load, x_B, forces, batch.dampingNodeForces(lane), mesh.rounded(geom.triangle).sphereCentre,
-                       partner, phys, exactly ? &exact : nullptr, lane},
-                      onBody_B);
+    const RoundedTriangle& rounded = mesh.rounded(geom.triangle);
+    load.elasticEnergy =
+        law.normal->apply({geom, load, x_B, forces, batch.dampingNodeForces(lane), rounded.sphereCentre, rounded.normal,
+                           partner, phys, exactly ? &exact : nullptr, lane},
+                          onBody_B);
     const Vector3r point_B = planePoint(geom, geom.effectivePoint);
     // Fn acts at c + (-Mn_y, Mn_x) / Fn (NodeForces.hpp), so Fn times that point needs no division.
     const Vector3r weighted_B =

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "pkg/law/FacingRamp.hpp"
+
 namespace roundedmesh {
 namespace {
 
@@ -74,16 +76,16 @@ EdgeGradients edgeGradients(const PressureGeom& geom, bool partnerTriangle, Real
   return g;
 }
 
-}  // namespace
-
-EnergyForces contactEnergyGradient(const PressureGeom& geom, Real elasticForce, Real energyAmplitude,
-                                   const std::array<Vector3r, 3>& corners1, const Vector3r& sphere1,
-                                   const EnergyPartner& partner, const DiskPolygonBatch& edges, int polygon) {
+// -grad U, U itself, as if every triangle faced fully.
+EnergyForces fullyFacing(const PressureGeom& geom, Real elasticForce, Real energyAmplitude,
+                         const std::array<Vector3r, 3>& corners1, const Vector3r& sphere1, const EnergyPartner& partner,
+                         const DiskPolygonBatch& edges, int polygon) {
   const Vector3r& n = geom.normal;
   auto inSpace = [&](const Vector2r& u) -> Vector3r { return u.x() * geom.tangent1 + u.y() * geom.tangent2; };
   const bool triangle = partner.kind == EnergyPartner::Triangle;
   const EdgeGradients g = edgeGradients(geom, triangle, energyAmplitude, edges, polygon);
   EnergyForces out;
+  out.energy = energyAmplitude * edges.integrals(polygon).energy;
   if (partner.kind == EnergyPartner::Plane) {
     // The outline's corners are the partner's: moving s1 in the plane moves c, and so every projected corner, its
     // own and the outline's alike.
@@ -108,6 +110,44 @@ EnergyForces contactEnergyGradient(const PressureGeom& geom, Real elasticForce, 
     }
   }
   out.onBody2[out.count++] = {partner.sphereCentre, elasticForce * n + turning / distance};
+  return out;
+}
+
+// w U in place of U (FacingRamp.hpp): the forces scaled by w, and -U grad w added. Body 2 moved by t and turned by
+// omega changes n12 by (1 - n12 n12^T) t / |s2 - s1| and n2 (or a plane's n12) by omega x n2.
+void turnedAside(const Vector3r& n, const Vector3r& normal1, const Vector3r& sphere1, const EnergyPartner& partner,
+                 EnergyForces& out) {
+  const Real facing1 = normal1.dot(n), facing2 = -partner.normal.dot(n);
+  const FacingRamp own = facingRamp(facing1);
+  const FacingRamp other = partner.kind == EnergyPartner::Triangle ? facingRamp(facing2) : FacingRamp{1, 0};
+  const Real w = own.value * other.value;
+  if (w == 1) return;  // both at 1: their slopes are 0
+  const Real U = out.energy;
+  out.energy *= w;
+  for (int k = 0; k < out.count; ++k) out.onBody2[k].force *= w;
+  if (partner.kind == EnergyPartner::Plane) {
+    // d(n1 . n12) = omega . (n12 x n1)
+    out.coupleOnBody2 = -U * own.slope * n.cross(normal1);
+    return;
+  }
+  // d(n1 . n12) = (n1 - (n1 . n12) n12) . t / |s2 - s1|;  d(-n2 . n12) = -(n2 + (-n2 . n12) n12) . t / |s2 - s1|
+  // - omega . (n2 x n12). The force at s2 is the last of onBody2.
+  Vector3r atSphere = -own.slope * other.value * (normal1 - facing1 * n);
+  if (partner.kind == EnergyPartner::Triangle) {
+    atSphere += own.value * other.slope * (partner.normal + facing2 * n);
+    out.coupleOnBody2 = U * own.value * other.slope * partner.normal.cross(n);
+  }
+  out.onBody2[out.count - 1].force += U / (partner.sphereCentre - sphere1).norm() * atSphere;
+}
+
+}  // namespace
+
+EnergyForces contactEnergyGradient(const PressureGeom& geom, Real elasticForce, Real energyAmplitude,
+                                   const std::array<Vector3r, 3>& corners1, const Vector3r& sphere1,
+                                   const Vector3r& normal1, const EnergyPartner& partner, const DiskPolygonBatch& edges,
+                                   int polygon) {
+  EnergyForces out = fullyFacing(geom, elasticForce, energyAmplitude, corners1, sphere1, partner, edges, polygon);
+  turnedAside(geom.normal, normal1, sphere1, partner, out);
   return out;
 }
 

@@ -14,6 +14,10 @@
 // and -g_j at each of body 2's corners; against a plane, a Box's face or a Facet (c the foot of s1, which carries every
 // projected corner with it): F_el n12 - sum_j g_j - sum_k h_k at s1 and +g_j at each of body 1's corners. Body 1
 // receives the opposite forces at the same points. Only the circular contact (curvature 'mean').
+// Where a triangle is turned nearly side-on to n12 the energy is w U (FacingRamp.hpp, the facing test of Eq. B.5 made
+// continuous) and its gradient w grad U + U grad w, where w's factors f(n1 . n12) and f(-n2 . n12) turn with the
+// bodies: n12 with s2 - s1 (a force at s2), n2 with body 2 (a couple), and against a plane n1 against the face's
+// normal (a couple).
 #pragma once
 
 #include <array>
@@ -28,6 +32,7 @@ struct EnergyPartner {
   enum Kind { Triangle, Sphere, Plane } kind;
   Vector3r sphereCentre = Vector3r::Zero();  // s2 (not for a plane)
   std::array<Vector3r, 3> corners;           // a triangle's, in the order of geom.partnerNodes
+  Vector3r normal = Vector3r::Zero();        // a triangle's outward unit normal n2
 };
 
 struct PointForce {
@@ -38,13 +43,17 @@ struct PointForce {
 struct EnergyForces {
   std::array<PointForce, 4> onBody2;
   int count = 0;
+  Vector3r coupleOnBody2 = Vector3r::Zero();  // [N m]
+  Real energy = 0;                            // w U, the energy these forces are minus the gradient of [J]
 };
 
-// corners1: body 1's triangle corners in the order of geom.nodes, sphere1: its sphere's centre s1 [m], body 1's frame.
-// elasticForce [N], energyAmplitude k [Pa/m^2]; S's edges' integrals along their parts inside Omega: those of polygon
-// `polygon` of `edges` (DiskPolygonBatch.hpp, where the elastic force was integrated).
+// corners1: body 1's triangle corners in the order of geom.nodes, sphere1: its sphere's centre s1 [m], normal1 its
+// outward unit normal n1, body 1's frame. elasticForce [N], energyAmplitude k [Pa/m^2]; U and S's edges' integrals
+// along their parts inside Omega: those of polygon `polygon` of `edges` (DiskPolygonBatch.hpp, where the elastic force
+// was integrated).
 EnergyForces contactEnergyGradient(const PressureGeom& geom, Real elasticForce, Real energyAmplitude,
                                    const std::array<Vector3r, 3>& corners1, const Vector3r& sphere1,
-                                   const EnergyPartner& partner, const DiskPolygonBatch& edges, int polygon);
+                                   const Vector3r& normal1, const EnergyPartner& partner, const DiskPolygonBatch& edges,
+                                   int polygon);
 
 }  // namespace roundedmesh

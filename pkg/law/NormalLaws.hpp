@@ -27,6 +27,7 @@ struct TriangleLoad {
   const std::array<Real, 3>& nodeForces;   // Eq. 15 of the whole load [N]
   const std::array<Real, 3>& dampingNodeForces;  // Eq. 15 of its damping part, only for a law that needsDamping [N]
   const Vector3r& sphereCentre;            // of body 1's triangle [m]
+  const Vector3r& triangleNormal;          // n1, body 1's triangle's outward unit normal
   const EnergyPartner& partner;            // body 2's side, filled only for a law that needsPartner
   const HertzPhys& phys;
   // Where the load was integrated in closed form (integratesExactly): its polygon is `exactIndex` of `exact`, S itself
@@ -35,8 +36,9 @@ struct TriangleLoad {
   int exactIndex = 0;
 };
 
-// Adds the contact's force on body 1 to its wrench (torque about body 1's origin).
-using NormalLawFunction = void (*)(const TriangleLoad& contact, Wrench& onBody);
+// Adds the contact's force on body 1 to its wrench (torque about body 1's origin); returns the elastic energy the
+// contact stores under this law [J], whose gradient its elastic force is where the law is conservative.
+using NormalLawFunction = Real (*)(const TriangleLoad& contact, Wrench& onBody);
 
 struct NormalLawEntry {
   const char* name;  // as users write it: rm.engine(normal=name)
@@ -50,7 +52,7 @@ struct NormalLawEntry {
 const std::vector<NormalLawEntry>& normalLaws();
 const NormalLawEntry& normalLaw(NormalLaw law);
 
-void pressureNormalLaw(const TriangleLoad& contact, Wrench& onBody);
-void energyNormalLaw(const TriangleLoad& contact, Wrench& onBody);
+Real pressureNormalLaw(const TriangleLoad& contact, Wrench& onBody);
+Real energyNormalLaw(const TriangleLoad& contact, Wrench& onBody);
 
 }  // namespace roundedmesh

@@ -4,8 +4,9 @@
 
 namespace roundedmesh {
 
-void pressureNormalLaw(const TriangleLoad& contact, Wrench& onBody) {
+Real pressureNormalLaw(const TriangleLoad& contact, Wrench& onBody) {
   addNodeForcesToBody(contact.corners, contact.nodeForces, contact.geom.normal, onBody);
+  return contact.load.elasticEnergy;
 }
 
 }  // namespace roundedmesh

@@ -15,6 +15,7 @@
 #include "pkg/engine/ContactStep.hpp"
 #include "pkg/engine/PairEvaluation.hpp"
 #include "pkg/io/SpringRecord.hpp"
+#include "pkg/law/FacingRamp.hpp"
 #include "pkg/meshing/BodyMesh.hpp"
 #include "py/module/ExposeEngineOptions.hpp"
 #include "py/module/NumpyConversion.hpp"
@@ -323,6 +324,7 @@ bp::dict describe(const TriangleContact& c) {
   d["normal"] = c.normal;
   d["regime"] = c.load.regime == Regime::Direct ? "direct" : c.load.regime == Regime::Exact ? "exact" : "quadrature";
   d["normal_force"] = c.load.force;
+  d["elastic_energy"] = c.load.elasticEnergy;
   d["tangential_force"] = c.friction.force;
   d["sliding"] = c.friction.sliding;
   d["node_forces1"] = bp::make_tuple(c.nodeForces[0], c.nodeForces[1], c.nodeForces[2]);
@@ -444,8 +446,10 @@ void exposeContactStep() {
       .add_property("keep_triangle_contacts", &SceneContacts::keepTriangleContacts,
                     &SceneContacts::setKeepTriangleContacts);
 
-  // The engine's constants, declared once in C++ (pkg/engine/EngineOptions.hpp, ContactModel.hpp, ContactStep.hpp).
+  // The engine's constants, declared once in C++ (pkg/engine/EngineOptions.hpp, ContactModel.hpp, ContactStep.hpp,
+  // pkg/law/FacingRamp.hpp).
   bp::scope().attr("STOP_OVERLAP") = kStopOverlap;
+  bp::scope().attr("FACING_RAMP") = kFacingRamp;
   bp::scope().attr("DEEPEST_OVERLAP") = kDeepestOverlap;
   bp::scope().attr("FAST_STEP") = kFastStep;
   bp::def("partner_kind", +[](const bp::object& body) {

@@ -23,7 +23,7 @@ package (rm.model_choice); rm.add_body(mesh, ..., error=0.05) applies its mesh.
 """
 from . import _yade  # noqa: F401  (YADE's converters must exist before _core returns vectors)
 from . import checkpoint, contact, export, meshfiles, model_choice, mpi, placement, progress, scene, shapes  # noqa: F401
-from ._core import EngineOptions, HertzMaterial, Mesh
+from ._core import FACING_RAMP, EngineOptions, HertzMaterial, Mesh
 from .contact import body_contact, partner_contact, plane_contact, sphere_contact, triangle_contacts
 from .model_choice import cheapest_model
 from .scene import _restore_mesh  # noqa: F401  (Mesh.__reduce__ names it as roundedmesh._restore_mesh)
@@ -39,5 +39,5 @@ __all__ = ["Mesh", "HertzMaterial", "EngineOptions", "add_body", "add_sphere", "
            "set_edge_radius", "set_velocity", "engine",
            "critical_timestep", "statistics", "rounded_bodies", "sphere_bodies", "plane_contact", "partner_contact", "body_contact",
            "sphere_contact", "triangle_contacts", "contacts", "unbalanced_force", "keep_triangle_forces",
-           "triangle_forces", "cheapest_model"]
+           "triangle_forces", "cheapest_model", "FACING_RAMP"]
 

@@ -95,6 +95,11 @@ def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2
         point, normal            c_eff [m] and n12 (rows of 3, global)
         regime                   'quadrature' or 'direct' (Eq. 14), or 'exact'
         normal_force             F_n on body 2 along n12 [N]
+        elastic_energy           the energy the contact stores under the normal law [J]: the pressure's (2/5) F_el
+                                 delta_s, or the energy density's integral over S in closed form (regime 'exact');
+                                 under normal='energy' that integral times the facing ramp (doc/physics.md), the
+                                 energy whose gradient the elastic force is (but for a partner's rounded edge or
+                                 corner, whose ellipse pushes as under the paper's law)
         tangential_force         F_t on body 2 (rows of 3, global) [N]; body 1 receives the opposite. With the
                                  spring, each triangle's share of the pair's force (by its normal force) and twist
         sliding                  whether the pair's spring slides (viscous: whether Eq. 21 chose sliding)
@@ -112,7 +117,8 @@ def triangle_contacts(mesh1, pos1, ori1, mesh2, pos2, ori2, material1, material2
     columns = {}
     for name in ("triangle1", "triangle2"):
         columns[name] = np.array([c[name] for c in listed], dtype=int)
-    for name in ("sphere_overlap", "effective_overlap", "radius", "contact_radius", "normal_force"):
+    for name in ("sphere_overlap", "effective_overlap", "radius", "contact_radius", "normal_force",
+                 "elastic_energy"):
         columns[name] = np.array([c[name] for c in listed], dtype=float)
     for name in ("point", "normal", "tangential_force", "node_forces1"):
         columns[name] = np.array([list(c[name]) for c in listed], dtype=float).reshape(-1, 3)
