@@ -1,6 +1,6 @@
 """Is the contact force conservative? (issue 12, group 1)
 
-    /usr/bin/python3 scripts/validation/energy_conservation.py [--quick] [--output out/energy] [--only loops collisions]
+    /usr/bin/python3 scripts/validation/energy_conservation.py [--quick] [--output out/energy] [--only loops collisions facing]
 
 The code, and what it writes: roundedmesh_study.energy_conservation.
 """

@@ -27,7 +27,7 @@ COLLISION_TARGET = 0.005
 def loop_work(case, segments, jump=energy.JUMP):
     """W / E of the script's loop of seed 1 for `case` at 0.6 mm with `segments` and radial steps of `jump` [m]."""
     ratio = energy.loop_work_over_energy(case, 0.6e-3, 1, segments, jump)
-    print(f"{case}, 0.6 mm: W / E = {ratio:+.3%} with {segments} segments")
+    print(f"{case}, 0.6 mm: W / E = {ratio:+.3g} with {segments} segments")
     return ratio
 
 
@@ -39,8 +39,8 @@ def collision_change(pair, kind="off-centre", depth=energy.DEPTHS["hertz"], frac
 
 # Two 642-node spheres at 0.6 mm, the shallower and worse of the two overlaps measured: |W| / E is 0.007 to 0.23 %
 # over the script's 8 sphere loops (a perfect sphere's is exactly 0; the mesh's comes from how its triangle pairs
-# share the contact circle, which changes as the meshes slide). 240 segments (the script uses 720) give -0.25 %
-# for this loop instead of -0.23 %. The tolerance is the issue's 1 %, four times the worst measured.
+# share the contact circle, which changes as the meshes slide). 240 segments (the script uses 720) give -0.223 %
+# for this loop, as the script's -0.23 %. The tolerance is the issue's 1 %, four times the worst measured.
 def test_meshed_spheres_do_almost_no_work_round_a_closed_loop():
     assert abs(loop_work("sphere-sphere", 240)) <= LOOP_TARGET
 
@@ -59,8 +59,8 @@ def test_pears_collide_keeping_their_kinetic_energy():
 
 
 # One loop each at 0.6 mm, seed 1, measured by the script (720 segments, radial steps of 50 um; the wall 2880):
-# pears -44 %, bears -79 %, bear on pear +438 %, bear on a wall +5.1 % of E. Here a twelfth of the segments and
-# radial steps of 200 um keep the test cheap: -45 %, -68 %, +457 %, +10 %, still far from the target.
+# pears -44 %, bears -79 %, bear on pear +438 %, bear on a wall +5.3 % of E. Here a twelfth of the segments and
+# radial steps of 200 um keep the test cheap: -44 %, -83 %, +437 %, +5.1 %, still far from the target.
 @ISSUE_12
 @pytest.mark.parametrize("case, segments", [("pear-pear", 60), ("bear-bear", 60), ("bear-pear", 60),
                                             ("bear-wall", 240)])
@@ -77,12 +77,14 @@ def test_non_spherical_bodies_collide_keeping_their_kinetic_energy(pair):
 
 
 # --- The energy law, rm.engine(normal='energy') (doc/physics.md, "The energy law") ----------------------------------
-# Its elastic force is the exact gradient of the contacts' energy: what is left of the loop work is the contacts that
-# enter or leave where their energy is not zero (the facing test, Eq. B.5) and the loop's own trapezoid rule. The
-# script's 4 loops per case at 720 segments (`--normal energy`): |W| / E at most 0.69 % (two bears, 0.6 mm), 0.25 %
-# (bear on pear), 0.41 % (two pears); collisions at dt_c / 50 within 0.15 %. Here one loop of each at 360 segments
-# (the bears' half-resolution loop differs from the full one by up to 3.7 % of E, the script's "trapezoid" column,
-# so the two bodies' loops run at full resolution) and two collisions; tolerances: the issue's 1 % and 0.5 %.
+# Its elastic force is the exact gradient of the contacts' energy (with the facing test of Eq. B.5 made continuous), so
+# a loop's work is the quadrature's error alone: each step is halved where halving changes its work by more than its
+# share of energy.LOOP_TOLERANCE E = 1e-4 E. The script's 4 loops per case at 720 segments (`--normal energy`): |W| / E
+# at most 0.0015 % (two pears, 1.5 mm), 0.0005 % (two bears); seed 1 at 0.6 mm with 120 segments (the wall 480), as
+# here: two bears 0.00016 %, bear on pear 0.00034 %, two pears 0.00011 %, bear on a wall 0.00001 %. Tolerance 0.1 % of
+# E: ten times the quadrature's tolerance and a tenth of the issue's 1 %; the paper's law misses it by 5 to 440 %.
+# Collisions at dt_c / 50, off-centre, Hertz range: two bears -0.002 %, bear on pear -0.001 % (the script's worst of
+# every pair and kind, seed 1: -0.025 %); tolerance the issue's 0.5 %.
 @pytest.fixture
 def energy_law():
     energy.CONTACT_OPTIONS.update(normal="energy")
@@ -90,10 +92,11 @@ def energy_law():
     energy.CONTACT_OPTIONS.clear()
 
 
-@pytest.mark.slow
-@pytest.mark.parametrize("case, segments", [("bear-bear", 720), ("bear-pear", 360), ("pear-pear", 360)])
-def test_the_energy_law_does_almost_no_work_round_a_closed_loop(energy_law, case, segments):
-    assert abs(loop_work(case, segments)) <= LOOP_TARGET
+@pytest.mark.parametrize("case, segments", [("bear-bear", 120), ("bear-wall", 480),
+                                            pytest.param("bear-pear", 120, marks=pytest.mark.slow),
+                                            pytest.param("pear-pear", 120, marks=pytest.mark.slow)])
+def test_the_energy_law_does_no_work_round_a_closed_loop(energy_law, case, segments):
+    assert abs(loop_work(case, segments)) <= 1e-3
 
 
 @pytest.mark.parametrize("pair", ["bear-bear", "bear-pear"])
