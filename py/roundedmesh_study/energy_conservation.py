@@ -254,8 +254,8 @@ class Walk:
         """Work [J] of the contact on body 2 from the start to each point: trapezoids of F . dx + T . dtheta. With a
         `tolerance` [J], each step between two points (body 2 moved in a straight line and turned about one axis) is
         halved, recursively, wherever halving changes its work by more than its share of the tolerance; `unrefined`
-        counts the pieces still apart after REFINEMENTS halvings: a jump of the force, where the work of a piece
-        never settles."""
+        counts the pieces still apart after REFINEMENTS halvings: where the force changes on a finer scale than the
+        finest piece, or jumps."""
         pieces = [0.0]
         self.unrefined = 0
         share = None if tolerance is None else tolerance / (len(self.points) - 1)
@@ -336,7 +336,7 @@ def run_loops(output, quick):
                       f"{row['work_half_segments_J'] / row['stored_energy_J']:+.4%}), W/E_peak = "
                       f"{row['work_over_peak_energy']:+.4%}, E = {row['stored_energy_J']:.3e} J, "
                       f"{row['points']} points, {row['crossings']} radial steps, {row['unrefined_pieces']} pieces "
-                      f"unrefined (jumps), {time.monotonic() - start:.1f} s",
+                      f"unrefined, {time.monotonic() - start:.1f} s",
                       flush=True)
     write_csv(os.path.join(output, "energy_loops.csv"), rows)
 
@@ -365,7 +365,8 @@ def run_loops(output, quick):
 
     lines = [f"Closed loops: |W| / E [%], {loops} loops per case; E stored at the start pose, E_peak at the pose of "
              "largest force; halving: the largest change of W / E when the segments are halved; unrefined: the "
-             "pieces of steps still apart after the refinement's last halving (jumps of the force), most in a loop", "",
+             "pieces of steps still apart after the refinement's last halving (a force steeper than they resolve, or a "
+             "jump), most in a loop", "",
              "| pair | overlap [mm] | E [mJ], median | \\|W\\|/E worst | median | \\|W\\|/E_peak worst "
              "| median | halving | unrefined | W/E of each loop [%] |", "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
     for case in LOOP_CASES:
