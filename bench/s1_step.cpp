@@ -10,6 +10,7 @@
 //                              curvature = 0: the paper's circle (mean curvature), 1: the ellipse of both principal
 //                              curvatures (estimated from the recorded mesh)
 //   s1Step/without_core/...    the same without the deep-overlap core (core_inset = 1): what the core costs
+//   s1Step/energy_law/...      the same under normal = 'energy', the same poses and lists: the two laws' step
 //   s1Step/stages/...          the same with timing = 'stages': the CPU time of each stage inside the pairs (lists,
 //                              near searches, narrow phase, law, core) per step, and the near pairs scanned
 //   BM_S1NarrowPhase           Ig2 over every pair's candidates of the settled packing (time per contact)
@@ -65,8 +66,8 @@ ContactModel withFriction(ContactModel model, long friction) {
 }
 
 // One step of S1's contacts; `core`: with the deep-overlap core (the default), or without it (core_inset = 1);
-// `stages`: timing = 'stages'.
-void s1Step(benchmark::State& state, bool core, bool stages) {
+// `stages`: timing = 'stages'; `normal`: the normal law.
+void s1Step(benchmark::State& state, bool core, bool stages, NormalLaw normal = NormalLaw::Pressure) {
   const int threads = static_cast<int>(state.range(0));
   const int motion = static_cast<int>(state.range(1));
   const RecordedScene::Trajectory* trajectory = motion == 1   ? &scene().shaking
@@ -81,6 +82,7 @@ void s1Step(benchmark::State& state, bool core, bool stages) {
   if (state.range(6) == 1) model.options.pressure.curvature = CurvatureModel::Principal;
   if (!core) model.options.coreInset = 1;
   if (stages) model.options.timing = Timing::Stages;
+  model.options.pressure.normal = normal;
   ContactData data;
   data.timeStep = 1e-4;  // S1's
   if (trajectory)
@@ -129,12 +131,15 @@ void s1Step(benchmark::State& state, bool core, bool stages) {
                  std::to_string(threads) + " thread(s)" +
                  (state.range(5) == 1 ? ", spring" : state.range(5) == 2 ? ", viscous" : "") +
                  (state.range(6) == 1 ? ", principal curvatures" : "") + (core ? "" : ", without the core") +
+                 (normal == NormalLaw::Energy ? ", energy law" : "") +
                  ", batches on " + batchedTarget());
 }
 
 void BM_S1Step(benchmark::State& state) { s1Step(state, true, false); }
 BENCHMARK(BM_S1Step)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2, 3}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // Where the time of a step goes, stage by stage.
+// The energy law's step on the same poses and lists as BM_S1Step's (issue 41: its cost beside the paper's law).
+BENCHMARK_CAPTURE(s1Step, energy_law, true, false, NormalLaw::Energy)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(s1Step, stages, true, true)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2, 3}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // What the deep-overlap core costs: the same steps without it.
 BENCHMARK_CAPTURE(s1Step, without_core, false, false)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
