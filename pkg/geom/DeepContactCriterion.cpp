@@ -10,6 +10,10 @@
 namespace roundedmesh {
 namespace {
 
+// How deep in both bodies the middle of a deep pair's segment must lie, as a fraction of its length: a real contact
+// at a slant of up to 66 degrees to the bodies' overlap passes (deepAtItsMiddle).
+constexpr Real kMiddleDepthFraction = 0.2;
+
 struct Crossing {
   Real at;  // along the path, in (0, 1]
   int triangle;
@@ -39,6 +43,24 @@ const std::vector<Crossing>& crossings(const RoundedMesh& mesh, int s, const Vec
 bool inCap(const RoundedMesh& mesh, int t, const Vector3r& x) {
   const RoundedTriangle& cap = mesh.rounded(t);
   return (x - cap.sphereCentre).squaredNorm() <= cap.radius * cap.radius;
+}
+
+// Whether the middle of the segment q1 q2 (body 1's frame) lies kMiddleDepthFraction of the segment's length deep in
+// both bodies. At a real deep contact it lies about half the segment deep in each, or cos(theta) / 2 of it at a slant
+// theta to the bodies' overlap; a segment inside both bodies along a thin sheet where they overlap lies a sheet's
+// half-thickness deep: two parallel cylinders 4 m long overlapping by 1 cm along their sides, their flat ends facing
+// each other through that sheet, 4 m apart (scene S5). The depths are the distance fields', so the test asks no more
+// than a field can tell: each body's requirement is capped at its field's band (a field reads no deeper), and its
+// tolerance is allowed; it rejects only segments longer than about five times the sheet's half-thickness plus that
+// tolerance.
+bool deepAtItsMiddle(const RoundedMesh& mesh1, const PlacedMesh& body2, const Vector3r& q1, const Vector3r& q2) {
+  const Vector3r middle = 0.5 * (q1 + q2);
+  const Real required = kMiddleDepthFraction * (q1 - q2).norm();
+  auto deepIn = [required](const SolidDistance& field, const Vector3r& x) {
+    return -field.signedAt(x) + field.tolerance() >= std::min(required, field.band());
+  };
+  return deepIn(mesh1.solidDistance(), middle) &&
+         deepIn(body2.mesh.solidDistance(), body2.rotation.transpose() * (middle - body2.translation));
 }
 
 }  // namespace
@@ -89,6 +111,7 @@ bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2,
   const Vector3r end2 = back * (q1 - body2.translation);
   const bool sure1 = (entry1 - q2).dot(n) <= 0 || mesh1.exits().keepsInside(mesh1, s, entry1, q2);
   const bool sure2 = (end2 - entry2).dot(normal2) <= 0 || body2.mesh.exits().keepsInside(body2.mesh, t, entry2, end2);
+  if (deep && !deepAtItsMiddle(mesh1, body2, q1, q2)) return false;
   if (sure1 && sure2) return true;
   if (deep) {
     // The fields reject most false deep pairs before the exact paths are followed. Between its ends, the segment

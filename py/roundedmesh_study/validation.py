@@ -150,7 +150,7 @@ def _long_axis(mesh):
     return int(np.argmax(vertices.max(axis=0) - vertices.min(axis=0)))
 
 
-def _aligned(mesh, target, angle=0.0):
+def aligned(mesh, target, angle=0.0):
     """Orientation that turns the mesh's long axis onto the global axis `target` (0, 1, 2), then turns the
     body by `angle` [rad] about that axis."""
     source = _long_axis(mesh)
@@ -314,8 +314,8 @@ def spheroid_pair(ratio, nodes=2562, poses=3, seed=1, angle=0.0, mesh_curvature=
     a, b = math.sqrt(ratio) * S5_SEMI_MINOR, S5_SEMI_MINOR
     overlaps = np.linspace(0, S5_MAX_OVERLAP * a if max_overlap is None else max_overlap, S5_SAMPLES + 1)[1:]
     crossing = Quaternion(Vector3(0, 0, 1), angle)
-    forces = [pressed_pair(mesh, mesh, overlaps, PAIR_MATERIAL, _aligned(mesh, 0, angle1),
-                           crossing * _aligned(mesh, 0, angle2), extents=(b, b), **engine_options)
+    forces = [pressed_pair(mesh, mesh, overlaps, PAIR_MATERIAL, aligned(mesh, 0, angle1),
+                           crossing * aligned(mesh, 0, angle2), extents=(b, b), **engine_options)
               for angle1, angle2 in axis_poses(poses, seed)]
     r_major, r_minor = spheroid_relative_radii(ratio, angle)
     return SpheroidSweep(overlaps, np.array(forces), elliptical_hertz_force(PAIR_MODULUS, r_major, r_minor, overlaps),
@@ -381,8 +381,8 @@ def cylinder_pair(arrangement, nodes=2562, poses=3, seed=1, **engine_options):
     second_axis = {"crossed": 1, "parallel": 0}.get(arrangement)
     if second_axis is None:
         raise ValueError(f"arrangement must be 'crossed' or 'parallel', got {arrangement!r}")
-    forces = [pressed_pair(mesh, mesh, CYLINDER_OVERLAPS, PAIR_MATERIAL, _aligned(mesh, 0, angle1),
-                           _aligned(mesh, second_axis, angle2), extents=(CYLINDER_RADIUS, CYLINDER_RADIUS),
+    forces = [pressed_pair(mesh, mesh, CYLINDER_OVERLAPS, PAIR_MATERIAL, aligned(mesh, 0, angle1),
+                           aligned(mesh, second_axis, angle2), extents=(CYLINDER_RADIUS, CYLINDER_RADIUS),
                            **engine_options)
               for angle1, angle2 in axis_poses(poses, seed)]
     if arrangement == "crossed":

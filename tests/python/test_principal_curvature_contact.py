@@ -176,7 +176,7 @@ def test_spheroid_on_a_plane_follows_elliptical_hertz():
     overlaps = np.linspace(0, 0.05 * b, 26)[1:]
     reference = elliptical_hertz_force(v.PAIR_MODULUS, a * a / b, b, overlaps)
     for angle, _ in v.axis_poses(3):
-        ori = v._aligned(mesh, 0, angle)
+        ori = v.aligned(mesh, 0, angle)
         forces = [rm.plane_contact(mesh, Vector3(0, 0, b - d), ori, Vector3(0, 0, 0), Vector3(0, 0, 1), v.PAIR_MATERIAL,
                                    v.PAIR_MATERIAL, **PRINCIPAL)[0][2] for d in overlaps]
         assert nrmse(forces, reference) <= 0.01, angle
