@@ -10,9 +10,9 @@
 // Each body must hold the stretch of the segment behind its own triangle. Where that stretch is shorter than the
 // distance to the triangle's nearest exit at its angle (TriangleExits.hpp), or crosses none of its exits, it does;
 // this settles nearly every pair of smooth bodies. Otherwise the stretch is followed through the flat surface
-// exactly. A pair deeper than `shallow` that the exits do not settle at once must first lie deep at its segment's
-// middle, whatever the exits say (a segment along a thin sheet where two bodies overlap stays inside both: two
-// parallel cylinders' flat ends facing each other through the sheet along their sides); then it is tested against
+// exactly. A pair deeper than `shallow` must first lie deep at its segment's middle, whatever the exits say (a
+// segment along a thin sheet where two bodies overlap crosses no exit: two parallel cylinders' flat ends facing each
+// other through the sheet along their sides); then it is tested against
 // both bodies' distance fields (SolidDistance.hpp), at its ends and at points no farther apart than the fields'
 // tolerance between them: within each body's tallest cap (points of the rounded solid lie that close to the flat
 // one) plus the field's tolerance, which rejects most false deep pairs cheaply. The candidate lists use the
