@@ -137,9 +137,9 @@ void s1Step(benchmark::State& state, bool core, bool stages, NormalLaw normal = 
 
 void BM_S1Step(benchmark::State& state) { s1Step(state, true, false); }
 BENCHMARK(BM_S1Step)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2, 3}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
-// Where the time of a step goes, stage by stage.
 // The energy law's step on the same poses and lists as BM_S1Step's (issue 41: its cost beside the paper's law).
 BENCHMARK_CAPTURE(s1Step, energy_law, true, false, NormalLaw::Energy)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
+// Where the time of a step goes, stage by stage.
 BENCHMARK_CAPTURE(s1Step, stages, true, true)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2, 3}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();
 // What the deep-overlap core costs: the same steps without it.
 BENCHMARK_CAPTURE(s1Step, without_core, false, false)->ArgsProduct({threadCounts({1, 2}), {0, 1, 2}, {0}, {0}, {0}, {0}, {0}})->Unit(benchmark::kMillisecond)->UseRealTime();

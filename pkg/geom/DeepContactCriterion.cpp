@@ -101,6 +101,7 @@ bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2,
   const Real hSq = lateral.squaredNorm();
   const Vector3r q1 = p.sphereCentre + lateral + std::sqrt(std::max(p.radius * p.radius - hSq, Real(0))) * n;
   const Vector3r q2 = sphere2 + lateral - std::sqrt(std::max(q.radius * q.radius - hSq, Real(0))) * n;
+  if (deep && !deepAtItsMiddle(mesh1, body2, q1, q2)) return false;
   // Where the line crosses each flat triangle, and how far the other body's end of the segment lies behind it, in
   // the flat solid: the stretch that solid must hold (none where that end lies in the triangle's own cap). It does,
   // surely, where it crosses none of the triangle's exits.
@@ -111,7 +112,6 @@ bool overlapInsideBoth(const RoundedMesh& mesh1, int s, const PlacedMesh& body2,
   const Vector3r end2 = back * (q1 - body2.translation);
   const bool sure1 = (entry1 - q2).dot(n) <= 0 || mesh1.exits().keepsInside(mesh1, s, entry1, q2);
   const bool sure2 = (end2 - entry2).dot(normal2) <= 0 || body2.mesh.exits().keepsInside(body2.mesh, t, entry2, end2);
-  if (deep && !deepAtItsMiddle(mesh1, body2, q1, q2)) return false;
   if (sure1 && sure2) return true;
   if (deep) {
     // The fields reject most false deep pairs before the exact paths are followed. Between its ends, the segment

@@ -12,11 +12,11 @@
 // this settles nearly every pair of smooth bodies. Otherwise the stretch is followed through the flat surface
 // exactly. A pair deeper than `shallow` must first lie deep at its segment's middle, whatever the exits say (a
 // segment along a thin sheet where two bodies overlap crosses no exit: two parallel cylinders' flat ends facing each
-// other through the sheet along their sides); then it is tested against
-// both bodies' distance fields (SolidDistance.hpp), at its ends and at points no farther apart than the fields'
-// tolerance between them: within each body's tallest cap (points of the rounded solid lie that close to the flat
-// one) plus the field's tolerance, which rejects most false deep pairs cheaply. The candidate lists use the
-// necessary condition on one triangle of each pair, capReaches (CapReach.hpp).
+// other through the sheet along their sides); then it is tested against both bodies' distance fields
+// (SolidDistance.hpp), at its ends and at points no farther apart than the fields' tolerance between them: within
+// each body's tallest cap (points of the rounded solid lie that close to the flat one) plus the field's tolerance,
+// which rejects most false deep pairs cheaply. The candidate lists use the necessary condition on one triangle of
+// each pair, capReaches (CapReach.hpp).
 #pragma once
 
 #include "pkg/bound/CapReach.hpp"
